@@ -1,0 +1,26 @@
+// Copyright (c) 2026 The CGAL_ext geodesics developers.
+#ifndef CGAL_EXT_GEODESICS_3_GEODESIC_STATISTICS_H
+#define CGAL_EXT_GEODESICS_3_GEODESIC_STATISTICS_H
+
+#include <cstddef>
+
+namespace CGAL_ext {
+
+/// \ingroup PkgGeodesics3Ref
+/// What a geodesic solver did, filled in when the caller passes `statistics(stats)`.
+struct Geodesic_statistics
+{
+  std::size_t vertices = 0;          ///< vertices of the mesh
+  std::size_t faces = 0;             ///< faces of the mesh
+  std::size_t windows_created = 0;   ///< windows that entered a window list
+  std::size_t peak_windows = 0;      ///< largest number of windows alive at one time
+  std::size_t peak_window_bytes = 0; ///< memory held by the window pool at its peak
+  std::size_t vertices_popped = 0;   ///< vertices taken from the priority queue (with repeats)
+  std::size_t lists_propagated = 0;  ///< window lists propagated across a triangle
+  double seconds_setup = 0;          ///< building the mesh cache and checking the input
+  double seconds_solve = 0;          ///< the propagation alone
+};
+
+} // namespace CGAL_ext
+
+#endif // CGAL_EXT_GEODESICS_3_GEODESIC_STATISTICS_H

@@ -1,0 +1,98 @@
+// Copyright (c) 2026 The CGAL_ext geodesics developers.
+#ifndef CGAL_EXT_GEODESICS_3_NAMED_FUNCTION_PARAMETERS_H
+#define CGAL_EXT_GEODESICS_3_NAMED_FUNCTION_PARAMETERS_H
+
+#include <CGAL_ext/Geodesics_3/Geodesic_statistics.h>
+
+#include <CGAL/Named_function_parameters.h>
+
+namespace CGAL_ext {
+namespace internal_np {
+
+#define CGAL_ext_add_named_parameter(X, Y, Z) enum X { Y };
+#include <CGAL_ext/Geodesics_3/internal/parameters_interface.h>
+#undef CGAL_ext_add_named_parameter
+enum statistics_t { statistics };
+
+} // namespace internal_np
+
+/// \ingroup PkgGeodesics3Ref
+/// A named-parameter pack that chains CGAL's parameters (`vertex_point_map`,
+/// `vertex_index_map`, `algorithm`, ...) with the package's own (`max_distance`,
+/// `stop_vertices`, `statistics`). It is a `CGAL::Named_function_parameters`, so CGAL's
+/// `get_parameter()` and `choose_parameter()` read it. Start a chain with a function of
+/// `CGAL_ext::parameters`.
+template <typename T, typename Tag, typename Base = CGAL::internal_np::No_property>
+struct Named_function_parameters : CGAL::Named_function_parameters<T, Tag, Base>
+{
+  typedef CGAL::Named_function_parameters<T, Tag, Base> cgal_parameters;
+  typedef Named_function_parameters<T, Tag, Base> self;
+
+  Named_function_parameters() : cgal_parameters() {}
+  Named_function_parameters(const T& v) : cgal_parameters(v) {}
+  Named_function_parameters(const T& v, const Base& b) : cgal_parameters(v, b) {}
+
+#define CGAL_ext_chain_parameter(NS, X, Z)                                          \
+  template <typename K>                                                             \
+  Named_function_parameters<K, NS::X, self> Z(const K& k) const                     \
+  {                                                                                 \
+    return Named_function_parameters<K, NS::X, self>(k, *this);                     \
+  }
+#define CGAL_add_named_parameter(X, Y, Z) CGAL_ext_chain_parameter(CGAL::internal_np, X, Z)
+#include <CGAL/STL_Extension/internal/parameters_interface.h>
+#undef CGAL_add_named_parameter
+#define CGAL_ext_add_named_parameter(X, Y, Z) CGAL_ext_chain_parameter(CGAL_ext::internal_np, X, Z)
+#include <CGAL_ext/Geodesics_3/internal/parameters_interface.h>
+#undef CGAL_ext_add_named_parameter
+#undef CGAL_ext_chain_parameter
+
+  /// asks the solver to fill `s` (kept by reference).
+  Named_function_parameters<Geodesic_statistics*, internal_np::statistics_t, self>
+  statistics(Geodesic_statistics& s) const
+  {
+    return Named_function_parameters<Geodesic_statistics*, internal_np::statistics_t, self>(&s, *this);
+  }
+};
+
+/// \ingroup PkgGeodesics3Ref
+/// Functions that start a chain of named parameters (CGAL's and the package's).
+namespace parameters {
+
+/// the type of the empty pack
+typedef Named_function_parameters<bool, CGAL::internal_np::all_default_t> Default_named_parameters_type;
+
+/// the empty pack: every parameter takes its default value.
+inline Named_function_parameters<bool, CGAL::internal_np::all_default_t> default_values()
+{
+  return Named_function_parameters<bool, CGAL::internal_np::all_default_t>();
+}
+
+#define CGAL_ext_start_parameter(NS, X, Z)                                          \
+  template <typename K>                                                             \
+  Named_function_parameters<K, NS::X> Z(const K& k)                                 \
+  {                                                                                 \
+    return Named_function_parameters<K, NS::X>(k);                                  \
+  }
+#define CGAL_add_named_parameter(X, Y, Z) CGAL_ext_start_parameter(CGAL::internal_np, X, Z)
+#include <CGAL/STL_Extension/internal/parameters_interface.h>
+#undef CGAL_add_named_parameter
+#define CGAL_ext_add_named_parameter(X, Y, Z) CGAL_ext_start_parameter(CGAL_ext::internal_np, X, Z)
+#include <CGAL_ext/Geodesics_3/internal/parameters_interface.h>
+#undef CGAL_ext_add_named_parameter
+#undef CGAL_ext_start_parameter
+
+/// asks the solver to fill `s` (kept by reference).
+inline Named_function_parameters<Geodesic_statistics*, internal_np::statistics_t>
+statistics(Geodesic_statistics& s)
+{
+  return Named_function_parameters<Geodesic_statistics*, internal_np::statistics_t>(&s);
+}
+
+using CGAL::parameters::choose_parameter;
+using CGAL::parameters::get_parameter;
+using CGAL::parameters::is_default_parameter;
+
+} // namespace parameters
+} // namespace CGAL_ext
+
+#endif // CGAL_EXT_GEODESICS_3_NAMED_FUNCTION_PARAMETERS_H

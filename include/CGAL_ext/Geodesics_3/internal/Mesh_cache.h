@@ -1,0 +1,242 @@
+// Copyright (c) 2026 The CGAL_ext geodesics developers.
+#ifndef CGAL_EXT_GEODESICS_3_INTERNAL_MESH_CACHE_H
+#define CGAL_EXT_GEODESICS_3_INTERNAL_MESH_CACHE_H
+
+#include <CGAL_ext/Geodesics_3/Geodesic_error.h>
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/properties.h>
+#include <CGAL/Dynamic_property_map.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace CGAL_ext {
+namespace Geodesics_3 {
+namespace internal {
+
+/// Geometry of one half-edge h = (A -> B) seen from its own face (A, B, C): the edge length and
+/// the apex C in the half-edge's frame (A at the origin, B at (length, 0), C above the x-axis).
+struct Halfedge_frame
+{
+  double length;
+  double apex_x;
+  double apex_y;
+};
+
+/// A flat, index-based copy of a triangle mesh: everything the propagation cores read, built in
+/// one pass so that no generic graph traversal runs inside a hot loop.
+///
+/// Half-edges are implicit: face f owns half-edges 3f, 3f+1, 3f+2; half-edge 3f+k runs from
+/// corner k to corner k+1 of the face, so next/prev/face are arithmetic.
+struct Mesh_cache
+{
+  // Vertices with an angle sum above this are treated as saddles (pseudo-sources). Vertices that
+  // are flat up to round-off are included, so that no thin shadow wedge is ever missed.
+  static constexpr double saddle_angle_tolerance = 1e-6;
+
+  std::size_t number_of_vertices = 0;
+  std::size_t number_of_faces = 0;
+
+  std::vector<std::array<double, 3>> position; // per vertex
+  std::vector<std::int32_t> corner_vertex;     // per half-edge: its source vertex
+  std::vector<std::int32_t> opposite_halfedge; // per half-edge, -1 on the border
+  std::vector<Halfedge_frame> frame;           // per half-edge
+  std::vector<double> corner_angle;            // per half-edge: the angle at its source vertex
+  std::vector<std::int32_t> first_outgoing;    // per vertex, -1 if isolated; a border one first
+  std::vector<double> angle_sum;               // per vertex
+  std::vector<std::uint8_t> is_border_vertex;  // per vertex
+  std::vector<std::uint8_t> is_pseudo_source;  // per vertex: saddle or border vertex
+  double mean_edge_length = 0;
+  double bbox_diagonal = 0;
+
+  static int next(int h) { return h % 3 == 2 ? h - 2 : h + 1; }
+  static int prev(int h) { return h % 3 == 0 ? h + 2 : h - 1; }
+  static int face(int h) { return h / 3; }
+  int source(int h) const { return corner_vertex[h]; }
+  int target(int h) const { return corner_vertex[next(h)]; }
+  int apex(int h) const { return corner_vertex[prev(h)]; }
+  int opposite(int h) const { return opposite_halfedge[h]; }
+  std::size_t number_of_halfedges() const { return corner_vertex.size(); }
+
+  /// Calls `f(h)` for each half-edge leaving `v`, turning around `v` from the border (if any).
+  template <class Function>
+  void for_each_outgoing(int v, Function f) const
+  {
+    const int start = first_outgoing[v];
+    if(start < 0)
+      return;
+    int h = start;
+    do {
+      f(h);
+      h = opposite_halfedge[prev(h)];
+    } while(h >= 0 && h != start);
+  }
+
+  /// Computes the frames, angles and flags once `position`, `corner_vertex` and
+  /// `opposite_halfedge` are set; throws `Geodesic_error` on a degenerate triangle or a
+  /// non-manifold vertex.
+  void finish();
+};
+
+inline void Mesh_cache::finish()
+{
+  const std::size_t nh = corner_vertex.size();
+  const std::size_t nv = position.size();
+  frame.resize(nh);
+  corner_angle.resize(nh);
+  double length_sum = 0;
+  std::size_t edge_count = 0;
+  for(std::size_t f = 0; f < number_of_faces; ++f) {
+    const std::array<double, 3>* p[3];
+    for(int k = 0; k < 3; ++k)
+      p[k] = &position[corner_vertex[3 * f + k]];
+    for(int k = 0; k < 3; ++k) {
+      const auto& a = *p[k];
+      const auto& b = *p[(k + 1) % 3];
+      const auto& c = *p[(k + 2) % 3];
+      const double ab[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+      const double ac[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+      const double cr[3] = {ab[1] * ac[2] - ab[2] * ac[1], ab[2] * ac[0] - ab[0] * ac[2],
+                            ab[0] * ac[1] - ab[1] * ac[0]};
+      const double len = std::sqrt(ab[0] * ab[0] + ab[1] * ab[1] + ab[2] * ab[2]);
+      const double twice_area = std::sqrt(cr[0] * cr[0] + cr[1] * cr[1] + cr[2] * cr[2]);
+      const double dot = ab[0] * ac[0] + ab[1] * ac[1] + ab[2] * ac[2];
+      const double longest =
+        std::max({len, std::sqrt(ac[0] * ac[0] + ac[1] * ac[1] + ac[2] * ac[2]),
+                  std::hypot(c[0] - b[0], c[1] - b[1], c[2] - b[2])});
+      // A triangle whose height is below 1e-12 of its longest side cannot be unfolded reliably.
+      if(!(len > 0) || !(twice_area > 1e-12 * longest * longest)) {
+        std::ostringstream msg;
+        msg << "degenerate (zero-area) triangle: face " << f << " (vertices "
+            << corner_vertex[3 * f] << ", " << corner_vertex[3 * f + 1] << ", "
+            << corner_vertex[3 * f + 2] << ")";
+        throw Geodesic_error(msg.str());
+      }
+      const std::size_t h = 3 * f + k;
+      frame[h] = Halfedge_frame{len, dot / len, twice_area / len};
+      corner_angle[h] = std::atan2(twice_area, dot);
+      const int o = opposite_halfedge[h];
+      if(o < 0 || static_cast<std::size_t>(o) > h) {
+        length_sum += len;
+        ++edge_count;
+      }
+    }
+  }
+  mean_edge_length = edge_count ? length_sum / double(edge_count) : 0.;
+
+  // One outgoing half-edge per vertex, a border one when there is one, so that turning around
+  // the vertex from it meets every face of its umbrella.
+  first_outgoing.assign(nv, -1);
+  std::vector<std::int32_t> corner_count(nv, 0);
+  for(std::size_t h = 0; h < nh; ++h) {
+    const int v = corner_vertex[h];
+    ++corner_count[v];
+    if(first_outgoing[v] < 0 || opposite_halfedge[h] < 0)
+      first_outgoing[v] = static_cast<std::int32_t>(h);
+  }
+  angle_sum.assign(nv, 0.);
+  is_border_vertex.assign(nv, 0);
+  is_pseudo_source.assign(nv, 0);
+  const double two_pi = 2 * 3.14159265358979323846;
+  for(std::size_t v = 0; v < nv; ++v) {
+    int reached = 0;
+    double sum = 0;
+    for_each_outgoing(int(v), [&](int h) {
+      ++reached;
+      sum += corner_angle[h];
+    });
+    if(reached != corner_count[v]) {
+      std::ostringstream msg;
+      msg << "non-manifold vertex " << v << ": its " << corner_count[v]
+          << " incident faces form more than one fan";
+      throw Geodesic_error(msg.str());
+    }
+    angle_sum[v] = sum;
+    const int h0 = first_outgoing[v];
+    is_border_vertex[v] = (h0 >= 0 && opposite_halfedge[h0] < 0) ? 1 : 0;
+    is_pseudo_source[v] = (is_border_vertex[v] || sum > two_pi - saddle_angle_tolerance) ? 1 : 0;
+  }
+
+  double lo[3] = {std::numeric_limits<double>::max(), std::numeric_limits<double>::max(),
+                  std::numeric_limits<double>::max()};
+  double hi[3] = {-lo[0], -lo[1], -lo[2]};
+  for(const auto& p : position)
+    for(int i = 0; i < 3; ++i) {
+      lo[i] = std::min(lo[i], p[i]);
+      hi[i] = std::max(hi[i], p[i]);
+    }
+  bbox_diagonal = position.empty() ? 0. : std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
+}
+
+/// Builds the cache of `tm`. Vertex `v` of `tm` becomes index `get(vim, v)`, face `f` becomes
+/// index `get(fim, f)`. Throws `Geodesic_error` for an empty mesh, a face that is not a triangle,
+/// a non-finite coordinate, a degenerate triangle or a non-manifold vertex.
+template <class TriangleMesh, class VertexPointMap, class VertexIndexMap, class FaceIndexMap>
+void build_mesh_cache(const TriangleMesh& tm, VertexPointMap vpm, VertexIndexMap vim,
+                      FaceIndexMap fim, Mesh_cache& cache)
+{
+  typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
+  const std::size_t nv = static_cast<std::size_t>(num_vertices(tm));
+  const std::size_t nf = static_cast<std::size_t>(num_faces(tm));
+  if(nv == 0 || nf == 0)
+    throw Geodesic_error("the mesh is empty (" + std::to_string(nv) + " vertices, " +
+                         std::to_string(nf) + " faces)");
+  if(nv >= std::size_t(std::numeric_limits<std::int32_t>::max()) ||
+     3 * nf >= std::size_t(std::numeric_limits<std::int32_t>::max()))
+    throw Geodesic_error("the mesh is too large for 32-bit indices");
+
+  cache.number_of_vertices = nv;
+  cache.number_of_faces = nf;
+  cache.position.assign(nv, {0., 0., 0.});
+  for(auto v : vertices(tm)) {
+    const auto& p = get(vpm, v);
+    const std::size_t i = static_cast<std::size_t>(get(vim, v));
+    const double x = CGAL::to_double(p.x()), y = CGAL::to_double(p.y()), z = CGAL::to_double(p.z());
+    if(!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z)) {
+      std::ostringstream msg;
+      msg << "vertex " << i << " has a non-finite coordinate (" << x << ", " << y << ", " << z << ")";
+      throw Geodesic_error(msg.str());
+    }
+    cache.position[i] = {x, y, z};
+  }
+
+  auto local_index = get(CGAL::dynamic_halfedge_property_t<int>(), tm);
+  cache.corner_vertex.assign(3 * nf, -1);
+  cache.opposite_halfedge.assign(3 * nf, -1);
+  for(auto f : faces(tm)) {
+    const std::size_t fi = static_cast<std::size_t>(get(fim, f));
+    int k = 0;
+    for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, tm), tm)) {
+      if(k < 3) {
+        cache.corner_vertex[3 * fi + k] = static_cast<std::int32_t>(get(vim, source(h, tm)));
+        put(local_index, h, static_cast<int>(3 * fi + k));
+      }
+      ++k;
+    }
+    if(k != 3)
+      throw Geodesic_error("face " + std::to_string(fi) + " has " + std::to_string(k) +
+                           " vertices; only triangle meshes are supported");
+  }
+  for(auto f : faces(tm)) {
+    for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, tm), tm)) {
+      const halfedge_descriptor o = opposite(h, tm);
+      if(!is_border(o, tm))
+        cache.opposite_halfedge[get(local_index, h)] = get(local_index, o);
+    }
+  }
+  cache.finish();
+}
+
+} // namespace internal
+} // namespace Geodesics_3
+} // namespace CGAL_ext
+
+#endif // CGAL_EXT_GEODESICS_3_INTERNAL_MESH_CACHE_H

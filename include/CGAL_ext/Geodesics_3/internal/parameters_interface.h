@@ -1,0 +1,6 @@
+// Copyright (c) 2026 The CGAL_ext geodesics developers.
+// The package's own named parameters, as an X-macro list (no include guard on purpose):
+// each user defines CGAL_ext_add_named_parameter(tag_type, tag_value, function_name).
+// `statistics` is not listed: it takes its argument by reference and is written by hand.
+CGAL_ext_add_named_parameter(max_distance_t, max_distance, max_distance)
+CGAL_ext_add_named_parameter(stop_vertices_t, stop_vertices, stop_vertices)

@@ -1,0 +1,194 @@
+// Copyright (c) 2026 The CGAL_ext geodesics developers.
+#ifndef CGAL_EXT_GEODESIC_DISTANCES_H
+#define CGAL_EXT_GEODESIC_DISTANCES_H
+
+/// \file geodesic_distances.h
+/// The one-shot function computing exact geodesic distances from sources to every vertex.
+
+#include <CGAL_ext/Geodesics_3/Geodesic_error.h>
+#include <CGAL_ext/Geodesics_3/Geodesic_statistics.h>
+#include <CGAL_ext/Geodesics_3/Named_function_parameters.h>
+#include <CGAL_ext/Geodesics_3/internal/Mesh_cache.h>
+#include <CGAL_ext/Geodesics_3/internal/VTP_solver.h>
+
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/boost/graph/properties.h>
+
+#include <array>
+#include <chrono>
+#include <iterator>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace CGAL_ext {
+
+/// \ingroup PkgGeodesics3Ref
+/// The solvers that `geodesic_distances()` can run, chosen with the named parameter
+/// `algorithm`.
+enum Geodesic_algorithm
+{
+  /// exact vertex-oriented triangle propagation (thesis chapter 4.1), the default
+  VTP
+};
+
+namespace Geodesics_3 {
+namespace internal {
+
+template <class T, class = void>
+struct is_range : std::false_type {};
+template <class T>
+struct is_range<T, std::void_t<decltype(std::begin(std::declval<const T&>()))>> : std::true_type {};
+
+// One source given as a vertex.
+template <class TriangleMesh, class VIM, class FIM>
+Source_point to_source_point(const TriangleMesh&, VIM vim, FIM,
+                             typename boost::graph_traits<TriangleMesh>::vertex_descriptor v)
+{
+  Source_point s;
+  s.vertex = static_cast<int>(get(vim, v));
+  return s;
+}
+
+// One source given as a face location: a face and barycentric coordinates in the order of the
+// face's vertices, starting at `source(halfedge(f))` (CGAL's Face_location convention).
+template <class TriangleMesh, class VIM, class FIM, class FT>
+Source_point to_source_point(
+  const TriangleMesh&, VIM, FIM fim,
+  const std::pair<typename boost::graph_traits<TriangleMesh>::face_descriptor, std::array<FT, 3>>& location)
+{
+  Source_point s;
+  s.face = static_cast<int>(get(fim, location.first));
+  for(int k = 0; k < 3; ++k)
+    s.barycentric[k] = CGAL::to_double(location.second[k]);
+  return s;
+}
+
+template <class TriangleMesh, class VIM, class FIM, class Sources>
+std::vector<Source_point> to_source_points(const TriangleMesh& tm, VIM vim, FIM fim, const Sources& sources)
+{
+  std::vector<Source_point> points;
+  if constexpr(is_range<Sources>::value) {
+    for(const auto& s : sources)
+      points.push_back(to_source_point(tm, vim, fim, s));
+  } else {
+    points.push_back(to_source_point(tm, vim, fim, sources));
+  }
+  return points;
+}
+
+} // namespace internal
+} // namespace Geodesics_3
+
+/// \ingroup PkgGeodesics3Ref
+/// computes the geodesic distance from the nearest of `sources` to every vertex of `tm` and
+/// writes it to `vertex_distance_map`. The default algorithm is exact: distances are those of
+/// the shortest paths on the polyhedral surface.
+///
+/// Vertices that no source reaches (another connected component), and vertices beyond the
+/// `max_distance` or beyond the farthest `stop_vertices`, get `+infinity`.
+///
+/// \tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`
+/// \tparam VertexDistanceMap a model of `WritablePropertyMap` with
+///         `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key and `double` as value
+/// \tparam Sources a vertex, a face location `std::pair<face_descriptor, std::array<FT,3>>`
+///         (barycentric coordinates in the order of the face's vertices, starting at
+///         `source(halfedge(f, tm), tm)`), or a range of either
+/// \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+///
+/// \param tm the triangle mesh; it must be a manifold triangle mesh without degenerate faces
+/// \param vertex_distance_map receives the distance of every vertex
+/// \param sources the source points; a duplicated source counts once
+/// \param np optional named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{algorithm}
+///     \cgalParamDescription{the solver}
+///     \cgalParamType{`CGAL_ext::Geodesic_algorithm`}
+///     \cgalParamDefault{`CGAL_ext::VTP`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{max_distance}
+///     \cgalParamDescription{the propagation stops beyond this distance; farther vertices get `+infinity`}
+///     \cgalParamType{`double`, non-negative}
+///     \cgalParamDefault{`+infinity`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{stop_vertices}
+///     \cgalParamDescription{the propagation stops once these vertices are settled; vertices farther than
+///                           the farthest of them get `+infinity`}
+///     \cgalParamType{a range of `boost::graph_traits<TriangleMesh>::%vertex_descriptor`}
+///     \cgalParamDefault{none: every vertex is settled}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{statistics}
+///     \cgalParamDescription{receives windows created, peak live windows and seconds}
+///     \cgalParamType{`CGAL_ext::Geodesic_statistics&`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
+///     \cgalParamType{a model of `ReadablePropertyMap` with a 3D point as value type}
+///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_index_map}
+///     \cgalParamDescription{a property map associating to each vertex of `tm` a unique index between `0` and `num_vertices(tm) - 1`}
+///     \cgalParamType{a model of `ReadablePropertyMap` with an integer value type}
+///     \cgalParamDefault{an automatically indexed internal map}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{face_index_map}
+///     \cgalParamDescription{a property map associating to each face of `tm` a unique index between `0` and `num_faces(tm) - 1`}
+///     \cgalParamType{a model of `ReadablePropertyMap` with an integer value type}
+///     \cgalParamDefault{an automatically indexed internal map}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// \throws Geodesic_error when `tm` is empty, not a manifold triangle mesh, has a non-finite
+///         coordinate or a degenerate triangle, when a source or stop vertex is out of range,
+///         when barycentric coordinates are not a convex combination, or when `max_distance` is
+///         negative.
+template <class TriangleMesh, class VertexDistanceMap, class Sources,
+          class NamedParameters = parameters::Default_named_parameters_type>
+void geodesic_distances(const TriangleMesh& tm, VertexDistanceMap vertex_distance_map,
+                        const Sources& sources, const NamedParameters& np = parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
+
+  const auto start = std::chrono::steady_clock::now();
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                    get_const_property_map(CGAL::vertex_point, tm));
+  const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
+  const auto fim = CGAL::get_initialized_face_index_map(tm, np);
+  const Geodesic_algorithm algorithm =
+    choose_parameter(get_parameter(np, CGAL::internal_np::algorithm), VTP);
+  if(algorithm != VTP)
+    throw Geodesic_error("unknown geodesic algorithm " + std::to_string(int(algorithm)));
+
+  Geodesics_3::internal::Mesh_cache cache;
+  Geodesics_3::internal::build_mesh_cache(tm, vpm, vim, fim, cache);
+  Geodesics_3::internal::VTP_solver solver(cache);
+  for(const auto& s : Geodesics_3::internal::to_source_points(tm, vim, fim, sources))
+    solver.add_source(s);
+  solver.set_max_distance(choose_parameter(get_parameter(np, internal_np::max_distance),
+                                           Geodesics_3::internal::VTP_solver::infinity()));
+  if constexpr(!std::is_same<decltype(get_parameter(np, internal_np::stop_vertices)),
+                             CGAL::internal_np::Param_not_found>::value) {
+    for(vertex_descriptor v : get_parameter(np, internal_np::stop_vertices))
+      solver.add_stop_vertex(static_cast<int>(get(vim, v)));
+  }
+  const double seconds_setup = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  solver.run();
+
+  const std::vector<double>& d = solver.distances();
+  for(vertex_descriptor v : vertices(tm))
+    put(vertex_distance_map, v, d[get(vim, v)]);
+
+  Geodesic_statistics* stats = choose_parameter(get_parameter(np, internal_np::statistics),
+                                                static_cast<Geodesic_statistics*>(nullptr));
+  if(stats) {
+    *stats = solver.statistics();
+    stats->seconds_setup = seconds_setup;
+  }
+}
+
+} // namespace CGAL_ext
+
+#endif // CGAL_EXT_GEODESIC_DISTANCES_H
