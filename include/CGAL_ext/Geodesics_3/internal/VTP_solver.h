@@ -7,6 +7,7 @@
 #include <CGAL_ext/Geodesics_3/internal/Mesh_cache.h>
 #include <CGAL_ext/Geodesics_3/internal/Window.h>
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -220,11 +221,10 @@ private:
 
   // Appends a window to the list of half-edge h (if it survives the end-vertex filter) and
   // schedules the list when it lies in the swept region.
-  void insert_window(int h, const Window& w)
+  void insert_window(int h, Window w)
   {
     const double length = m_mesh.frame[h].length;
-    if(is_dominated_by_edge_vertices(w, length, m_distance[m_mesh.source(h)],
-                                     m_distance[m_mesh.target(h)]) ||
+    if(!trim_by_edge_vertices(w, length, m_distance[m_mesh.source(h)], m_distance[m_mesh.target(h)]) ||
        window_key(w) > m_limit_cache)
       return;
     const std::int32_t i = m_pool.allocate(w);
@@ -379,12 +379,13 @@ private:
     const double d_from = m_distance[m_mesh.source(h)];
     const double d_to = m_distance[m_mesh.target(h)];
     std::size_t n = 0;
-    for(const Window& w : m_scratch)
-      if(!is_dominated_by_edge_vertices(w, f.length, d_from, d_to) && window_key(w) <= m_limit_cache)
+    for(Window w : m_scratch)
+      if(trim_by_edge_vertices(w, f.length, d_from, d_to) && window_key(w) <= m_limit_cache)
         m_scratch[n++] = w;
     m_scratch.resize(n);
     if(n == 0)
       return;
+    prune_pairs();
 
     // "One angle, two sides": the window with the shortest path to the apex splits the edge.
     double best = infinity(), split = 0;
@@ -416,6 +417,32 @@ private:
           insert_window(g_cb, child);
       }
     }
+  }
+
+  // Rule 2: windows of the list are clipped against each other where they overlap.
+  void prune_pairs()
+  {
+    if(m_scratch.size() < 2)
+      return;
+    std::sort(m_scratch.begin(), m_scratch.end(),
+              [](const Window& a, const Window& b) { return a.b0 < b.b0; });
+    const std::size_t n = m_scratch.size();
+    for(std::size_t i = 0; i < n; ++i) {
+      Window& wi = m_scratch[i];
+      for(std::size_t j = i + 1; j < n && wi.b1 > wi.b0; ++j) {
+        Window& wj = m_scratch[j];
+        if(!(wj.b1 > wj.b0))
+          continue;
+        const int emptied = clip_pair(wi, wj);
+        if(emptied & 1)
+          wi.b1 = wi.b0;
+        if(emptied & 2)
+          wj.b1 = wj.b0;
+      }
+    }
+    m_scratch.erase(std::remove_if(m_scratch.begin(), m_scratch.end(),
+                                   [](const Window& w) { return !(w.b1 > w.b0); }),
+                    m_scratch.end());
   }
 
   const Mesh_cache& m_mesh;

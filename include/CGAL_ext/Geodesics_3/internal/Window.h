@@ -38,12 +38,32 @@ inline double window_key(const Window& w)
   return w.sigma - w.sy;
 }
 
-/// The filter of Xin and Wang (thesis eqs 4.1-4.2): the window is useless when the path through
-/// one end vertex of its edge is shorter at the far end of the window (hence at every point of
-/// it). `d_from`/`d_to` are the current distances of the source/target vertex of the half-edge.
-inline bool is_dominated_by_edge_vertices(const Window& w, double length, double d_from, double d_to)
+/// The filter of Xin and Wang (thesis eqs 4.1-4.2), made exact: the part of the window where
+/// the path through an end vertex of its edge is shorter is cut off. Along the edge,
+/// D(x) - x is non-increasing and D(x) + x non-decreasing, so the part beaten by the source
+/// vertex of the half-edge is an initial segment and the part beaten by its target a final one.
+/// `d_from`/`d_to` are the current distances of the source/target vertex of the half-edge.
+/// Returns false when nothing is left.
+inline bool trim_by_edge_vertices(Window& w, double length, double d_from, double d_to)
 {
-  return distance_at(w, w.b1) > d_from + w.b1 || distance_at(w, w.b0) > d_to + (length - w.b0);
+  const double r2 = w.sx * w.sx + w.sy * w.sy;
+  if(distance_at(w, w.b1) - w.b1 > d_from)
+    return false;
+  if(distance_at(w, w.b0) - w.b0 > d_from) {
+    // sigma + |s - x| = d_from + x
+    const double k = d_from - w.sigma;
+    const double x = (r2 - k * k) / (2 * (k + w.sx));
+    w.b0 = std::min(std::max(x, w.b0), w.b1);
+  }
+  if(distance_at(w, w.b0) + w.b0 > d_to + length)
+    return false;
+  if(distance_at(w, w.b1) + w.b1 > d_to + length) {
+    // sigma + |s - x| = d_to + length - x
+    const double m = d_to + length - w.sigma;
+    const double x = (m * m - r2) / (2 * (m - w.sx));
+    w.b1 = std::max(std::min(x, w.b1), w.b0);
+  }
+  return w.b1 > w.b0;
 }
 
 /// Where the line from the pseudo-source to the apex (cx, cy) crosses the x-axis.
@@ -65,6 +85,102 @@ inline double distance_to_apex(const Window& w, double crossing, double cx, doub
     return w.sigma + std::hypot(cx - w.sx, cy - w.sy);
   }
   return distance_at(w, p) + std::hypot(cx - p, cy);
+}
+
+/// The points of (lo, hi) where two windows of the same edge give equal distances, sorted;
+/// returns how many (0 to 2). With delta = sigma0 - sigma1, D1 = D0 reads
+/// |x - s1| = |x - s0| + delta; squaring once gives alpha x + beta = 2 delta |x - s0|, and a
+/// second time a quadratic. A root of the quadratic is kept only if it solves the first
+/// equation too (alpha x + beta has the sign of delta): squaring adds spurious roots.
+inline int equal_distance_points(const Window& w0, const Window& w1, double lo, double hi, double roots[2])
+{
+  const double delta = w0.sigma - w1.sigma;
+  const double alpha = 2 * (w0.sx - w1.sx);
+  const double beta = w1.sx * w1.sx + w1.sy * w1.sy - w0.sx * w0.sx - w0.sy * w0.sy - delta * delta;
+  int n = 0;
+  auto keep = [&](double x) {
+    if(x > lo && x < hi && (alpha * x + beta) * delta >= 0)
+      roots[n++] = x;
+  };
+  if(delta == 0) {
+    if(alpha != 0)
+      keep(-beta / alpha);
+    return n;
+  }
+  const double d2 = 4 * delta * delta;
+  const double a = alpha * alpha - d2;
+  const double b = 2 * alpha * beta + 2 * d2 * w0.sx;
+  const double c = beta * beta - d2 * (w0.sx * w0.sx + w0.sy * w0.sy);
+  if(std::abs(a) <= 1e-14 * (alpha * alpha + d2)) {
+    if(b != 0)
+      keep(-c / b);
+    return n;
+  }
+  const double disc = b * b - 4 * a * c;
+  if(disc < 0)
+    return 0;
+  // the numerically stable pair of roots
+  const double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
+  double r0 = q / a, r1 = q != 0 ? c / q : r0;
+  if(r0 > r1)
+    std::swap(r0, r1);
+  keep(r0);
+  if(r1 != r0)
+    keep(r1);
+  return n;
+}
+
+/// Clips two windows of the same edge against each other where they overlap: a window loses the
+/// part of the overlap where the other one is strictly shorter, when that part is at an end of
+/// its interval (a loss strictly inside its interval would split it, and is left alone).
+/// Returns a bit set: 1 if w0 became empty, 2 if w1 did.
+inline int clip_pair(Window& w0, Window& w1)
+{
+  const double lo = std::max(w0.b0, w1.b0), hi = std::min(w0.b1, w1.b1);
+  if(!(hi > lo))
+    return 0;
+  double cut[4];
+  cut[0] = lo;
+  int n = 1 + equal_distance_points(w0, w1, lo, hi, cut + 1);
+  cut[n++] = hi;
+  // Winner of each piece between consecutive cut points. On a tie w0 wins: two different
+  // straight paths of equal length meeting on the edge cannot both continue as shortest paths.
+  int winner[3];
+  for(int i = 0; i + 1 < n; ++i) {
+    const double x = 0.5 * (cut[i] + cut[i + 1]);
+    winner[i] = distance_at(w1, x) < distance_at(w0, x) ? 1 : 0;
+  }
+  // A window gives up the pieces the other one wins, from each end of the overlap that is an
+  // end of its own interval, inwards. Returns true if nothing is left of it.
+  auto trim = [&](Window& w, int other) {
+    int first = 0, last = n - 2;
+    if(w.b0 == lo)
+      while(first <= last && winner[first] == other)
+        ++first;
+    if(w.b1 == hi)
+      while(last >= first && winner[last] == other)
+        --last;
+    if(first > last) {
+      if(w.b0 == lo && w.b1 == hi)
+        return true;
+      if(w.b0 == lo)
+        w.b0 = hi;
+      else
+        w.b1 = lo;
+      return false;
+    }
+    if(first > 0)
+      w.b0 = cut[first];
+    if(last < n - 2)
+      w.b1 = cut[last + 1];
+    return false;
+  };
+  int result = 0;
+  if(trim(w0, 1))
+    result |= 1;
+  if(trim(w1, 0))
+    result |= 2;
+  return result;
 }
 
 /// A segment E0 -> E1 of the parent frame that a child window lands on, with what is needed to
