@@ -26,7 +26,11 @@ struct Window
   std::int32_t next; // next window of the same list, -1 at the end
 };
 
-inline double distance_at(const Window& w, double x) { return w.sigma + std::hypot(x - w.sx, w.sy); }
+/// Planar length of (x, y). std::hypot guards against overflow at a large cost; coordinates of
+/// a mesh are far from that range.
+inline double norm2d(double x, double y) { return std::sqrt(x * x + y * y); }
+
+inline double distance_at(const Window& w, double x) { return w.sigma + norm2d(x - w.sx, w.sy); }
 
 /// The smallest distance the window gives to a point of its interval.
 inline double window_key(const Window& w)
@@ -82,9 +86,9 @@ inline double distance_to_apex(const Window& w, double crossing, double cx, doub
     p = w.b1;
   else {
     p = crossing;
-    return w.sigma + std::hypot(cx - w.sx, cy - w.sy);
+    return w.sigma + norm2d(cx - w.sx, cy - w.sy);
   }
-  return distance_at(w, p) + std::hypot(cx - p, cy);
+  return distance_at(w, p) + norm2d(cx - p, cy);
 }
 
 /// The points of (lo, hi) where two windows of the same edge give equal distances, sorted;
@@ -139,16 +143,37 @@ inline int clip_pair(Window& w0, Window& w1)
   const double lo = std::max(w0.b0, w1.b0), hi = std::min(w0.b1, w1.b1);
   if(!(hi > lo))
     return 0;
+  // A distance is convex along the edge: its largest value on the overlap is at an end. When
+  // one window's largest value is no more than the other's smallest, no equation is solved.
+  const double lo0 = distance_at(w0, lo), hi0 = distance_at(w0, hi);
+  const double lo1 = distance_at(w1, lo), hi1 = distance_at(w1, hi);
+  auto smallest = [&](const Window& w, double d_lo, double d_hi) {
+    return (w.sx > lo && w.sx < hi) ? w.sigma - w.sy : std::min(d_lo, d_hi);
+  };
   double cut[4];
-  cut[0] = lo;
-  int n = 1 + equal_distance_points(w0, w1, lo, hi, cut + 1);
-  cut[n++] = hi;
-  // Winner of each piece between consecutive cut points. On a tie w0 wins: two different
-  // straight paths of equal length meeting on the edge cannot both continue as shortest paths.
   int winner[3];
-  for(int i = 0; i + 1 < n; ++i) {
-    const double x = 0.5 * (cut[i] + cut[i + 1]);
-    winner[i] = distance_at(w1, x) < distance_at(w0, x) ? 1 : 0;
+  int n;
+  if(std::max(lo0, hi0) <= smallest(w1, lo1, hi1)) {
+    cut[1] = hi;
+    winner[0] = 0;
+    n = 2;
+  } else if(std::max(lo1, hi1) < smallest(w0, lo0, hi0)) {
+    cut[1] = hi;
+    winner[0] = 1;
+    n = 2;
+  } else {
+    n = 0;
+  }
+  cut[0] = lo;
+  if(n == 0) {
+    n = 1 + equal_distance_points(w0, w1, lo, hi, cut + 1);
+    cut[n++] = hi;
+    // Winner of each piece between consecutive cut points. On a tie w0 wins: two different
+    // straight paths of equal length meeting on the edge cannot both continue as shortest paths.
+    for(int i = 0; i + 1 < n; ++i) {
+      const double x = 0.5 * (cut[i] + cut[i + 1]);
+      winner[i] = distance_at(w1, x) < distance_at(w0, x) ? 1 : 0;
+    }
   }
   // A window gives up the pieces the other one wins, from each end of the overlap that is an
   // end of its own interval, inwards. Returns true if nothing is left of it.
