@@ -431,6 +431,8 @@ private:
       Window& wi = m_scratch[i];
       for(std::size_t j = i + 1; j < n && wi.b1 > wi.b0; ++j) {
         Window& wj = m_scratch[j];
+        if(wj.b0 >= wi.b1)
+          break; // sorted by where they start (skipping a pair only keeps more windows)
         if(!(wj.b1 > wj.b0))
           continue;
         const int emptied = clip_pair(wi, wj);
