@@ -94,7 +94,7 @@ std::vector<Source_point> to_source_points(const TriangleMesh& tm, VIM vim, FIM 
 /// \tparam Sources a vertex, a face location `std::pair<face_descriptor, std::array<FT,3>>`
 ///         (barycentric coordinates in the order of the face's vertices, starting at
 ///         `source(halfedge(f, tm), tm)`), or a range of either
-/// \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+/// \tparam NamedParameters a sequence of named parameters, started from `CGAL_ext::parameters`
 ///
 /// \param tm the triangle mesh; it must be a manifold triangle mesh without degenerate faces
 /// \param vertex_distance_map receives the distance of every vertex

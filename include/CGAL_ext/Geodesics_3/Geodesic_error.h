@@ -15,7 +15,8 @@ namespace CGAL_ext {
 class Geodesic_error : public std::runtime_error
 {
 public:
-  /// builds the exception with the message `what`.
+  /// builds the exception.
+  /// \param what the message: the problem and where it is
   explicit Geodesic_error(const std::string& what) : std::runtime_error(what) {}
 };
 

@@ -9,9 +9,11 @@
 namespace CGAL_ext {
 namespace internal_np {
 
+#ifndef DOXYGEN_RUNNING
 #define CGAL_ext_add_named_parameter(X, Y, Z) enum X { Y };
 #include <CGAL_ext/Geodesics_3/internal/parameters_interface.h>
 #undef CGAL_ext_add_named_parameter
+#endif
 enum statistics_t { statistics };
 
 } // namespace internal_np
@@ -32,6 +34,7 @@ struct Named_function_parameters : CGAL::Named_function_parameters<T, Tag, Base>
   Named_function_parameters(const T& v) : cgal_parameters(v) {}
   Named_function_parameters(const T& v, const Base& b) : cgal_parameters(v, b) {}
 
+#ifndef DOXYGEN_RUNNING // the chaining functions, one per parameter of CGAL and of the package
 #define CGAL_ext_chain_parameter(NS, X, Z)                                          \
   template <typename K>                                                             \
   Named_function_parameters<K, NS::X, self> Z(const K& k) const                     \
@@ -45,8 +48,11 @@ struct Named_function_parameters : CGAL::Named_function_parameters<T, Tag, Base>
 #include <CGAL_ext/Geodesics_3/internal/parameters_interface.h>
 #undef CGAL_ext_add_named_parameter
 #undef CGAL_ext_chain_parameter
+#endif
 
-  /// asks the solver to fill `s` (kept by reference).
+  /// asks the solver to fill `s`, which is kept by reference.
+  /// \param s the statistics to fill
+  /// \return the pack with `statistics` added
   Named_function_parameters<Geodesic_statistics*, internal_np::statistics_t, self>
   statistics(Geodesic_statistics& s) const
   {
@@ -62,11 +68,13 @@ namespace parameters {
 typedef Named_function_parameters<bool, CGAL::internal_np::all_default_t> Default_named_parameters_type;
 
 /// the empty pack: every parameter takes its default value.
+/// \return the empty pack
 inline Named_function_parameters<bool, CGAL::internal_np::all_default_t> default_values()
 {
   return Named_function_parameters<bool, CGAL::internal_np::all_default_t>();
 }
 
+#ifndef DOXYGEN_RUNNING // the functions starting a chain, one per parameter of CGAL and of the package
 #define CGAL_ext_start_parameter(NS, X, Z)                                          \
   template <typename K>                                                             \
   Named_function_parameters<K, NS::X> Z(const K& k)                                 \
@@ -80,8 +88,11 @@ inline Named_function_parameters<bool, CGAL::internal_np::all_default_t> default
 #include <CGAL_ext/Geodesics_3/internal/parameters_interface.h>
 #undef CGAL_ext_add_named_parameter
 #undef CGAL_ext_start_parameter
+#endif
 
-/// asks the solver to fill `s` (kept by reference).
+/// asks the solver to fill `s`, which is kept by reference.
+/// \param s the statistics to fill
+/// \return a pack holding `statistics`
 inline Named_function_parameters<Geodesic_statistics*, internal_np::statistics_t>
 statistics(Geodesic_statistics& s)
 {
