@@ -1,0 +1,557 @@
+// Copyright (c) 2026 The CGAL_ext geodesics developers.
+// Tests of the command-line tool `geodesic`, run as a separate process; each test works in its
+// own folder under the build directory (kept when the test fails, for inspection).
+
+#include <CGAL_ext/geodesic_distances.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/IO/polygon_soup_io.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <set>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef K::Point_3 Point;
+typedef CGAL::Surface_mesh<Point> Mesh;
+typedef Mesh::Vertex_index Vertex_index;
+typedef Mesh::Face_index Face_index;
+typedef std::vector<std::vector<std::size_t>> Polygons;
+
+const std::string elephant = std::string(CGAL_EXT_DATA_DIR) + "/elephant.off";
+const std::string mushroom = std::string(CGAL_EXT_DATA_DIR) + "/mushroom.off";
+const double infinity = std::numeric_limits<double>::infinity();
+
+struct Result
+{
+  int exit_code;
+  std::string out;
+  std::string err;
+};
+
+std::string read_text(const fs::path& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::vector<std::string> lines_of(const std::string& text)
+{
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for(std::string line; std::getline(in, line);)
+    lines.push_back(line);
+  return lines;
+}
+
+/// Parses the tool's txt output: one number (or `inf`) per line, nothing else.
+std::vector<double> parse_distances(const std::string& text)
+{
+  std::vector<double> d;
+  for(const std::string& line : lines_of(text)) {
+    char* end = nullptr;
+    d.push_back(std::strtod(line.c_str(), &end));
+    EXPECT_TRUE(!line.empty() && *end == '\0') << "not a number: '" << line << "'";
+  }
+  return d;
+}
+
+std::map<std::string, std::string> parse_key_values(const std::string& text)
+{
+  std::map<std::string, std::string> kv;
+  for(const std::string& line : lines_of(text)) {
+    const auto eq = line.find('=');
+    EXPECT_NE(eq, std::string::npos) << "not key=value: '" << line << "'";
+    if(eq != std::string::npos)
+      kv[line.substr(0, eq)] = line.substr(eq + 1);
+  }
+  return kv;
+}
+
+struct Soup
+{
+  std::vector<Point> points;
+  Polygons polygons;
+};
+
+Soup read_soup(const std::string& path)
+{
+  Soup soup;
+  EXPECT_TRUE(CGAL::IO::read_polygon_soup(path, soup.points, soup.polygons));
+  return soup;
+}
+
+Mesh soup_to_mesh(const Soup& soup)
+{
+  Mesh mesh;
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(soup.points, soup.polygons, mesh);
+  return mesh;
+}
+
+/// The vertices of face f in the order of the library's barycentric coordinates.
+std::array<std::size_t, 3> library_corners(const Mesh& mesh, Face_index f)
+{
+  std::array<std::size_t, 3> corners{};
+  int k = 0;
+  for(auto h : CGAL::halfedges_around_face(mesh.halfedge(f), mesh))
+    corners[k++] = mesh.source(h);
+  return corners;
+}
+
+/// The library called directly, on the mesh built from the soup the way the tool builds it.
+template <class Sources>
+std::vector<double> library_distances(const Mesh& mesh, const Sources& sources)
+{
+  auto distance = get(CGAL::dynamic_vertex_property_t<double>(), mesh);
+  CGAL_ext::geodesic_distances(mesh, distance, sources);
+  std::vector<double> d;
+  for(Vertex_index v : mesh.vertices())
+    d.push_back(get(distance, v));
+  return d;
+}
+
+void expect_same_distances(const std::vector<double>& a, const std::vector<double>& b, double tolerance = 0)
+{
+  ASSERT_EQ(a.size(), b.size());
+  for(std::size_t i = 0; i < a.size(); ++i) {
+    if(std::isinf(a[i]) || std::isinf(b[i]))
+      EXPECT_EQ(a[i], b[i]) << "vertex " << i;
+    else
+      EXPECT_NEAR(a[i], b[i], tolerance) << "vertex " << i;
+  }
+}
+
+class Tool : public ::testing::Test
+{
+protected:
+  void SetUp() override
+  {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    std::string name = std::string(info->test_suite_name()) + "." + info->name();
+    std::replace(name.begin(), name.end(), '/', '_');
+    m_dir = fs::canonical("/proc/self/exe").parent_path() / "test_tool_tmp" / name;
+    fs::remove_all(m_dir);
+    fs::create_directories(m_dir);
+  }
+
+  void TearDown() override
+  {
+    if(!HasFailure())
+      fs::remove_all(m_dir);
+  }
+
+  fs::path path(const std::string& name) const { return m_dir / name; }
+
+  void write(const std::string& name, const std::string& content) const
+  {
+    std::ofstream(path(name), std::ios::binary) << content;
+  }
+
+  /// Runs the tool with `args` (a shell fragment) inside the test's folder.
+  Result run(const std::string& args) const
+  {
+    const std::string command = "cd '" + m_dir.string() + "' && '" + GEODESIC_TOOL + "' " + args +
+                                " >.stdout 2>.stderr";
+    const int status = std::system(command.c_str());
+    Result r;
+    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    r.out = read_text(path(".stdout"));
+    r.err = read_text(path(".stderr"));
+    fs::remove(path(".stdout"));
+    fs::remove(path(".stderr"));
+    return r;
+  }
+
+  /// Runs the tool and expects success with an empty stderr; returns the distances of `output`.
+  std::vector<double> distances(const std::string& args, const std::string& output = "d.txt") const
+  {
+    const Result r = run(args + " --output " + output);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(r.out, "");
+    return parse_distances(read_text(path(output)));
+  }
+
+  std::set<std::string> files() const
+  {
+    std::set<std::string> names;
+    for(const auto& entry : fs::directory_iterator(m_dir))
+      names.insert(entry.path().filename().string());
+    return names;
+  }
+
+  fs::path m_dir;
+};
+
+// ---------------------------------------------------------------------------------------------
+// What the tool relies on
+
+// The tool maps file ids to mesh ids by identity; this holds only because CGAL's
+// polygon_soup_to_polygon_mesh() adds the points and then the polygons in order.
+TEST_F(Tool, soup_to_mesh_keeps_the_file_order)
+{
+  for(const std::string& file : {elephant, mushroom}) {
+    const Soup soup = read_soup(file);
+    const Mesh mesh = soup_to_mesh(soup);
+    ASSERT_EQ(mesh.number_of_vertices(), soup.points.size());
+    ASSERT_EQ(mesh.number_of_faces(), soup.polygons.size());
+    for(Vertex_index v : mesh.vertices())
+      ASSERT_EQ(mesh.point(v), soup.points[v]) << file << " vertex " << v;
+    for(Face_index f : mesh.faces()) {
+      // same vertices, same cyclic order
+      const std::array<std::size_t, 3> c = library_corners(mesh, f);
+      const auto& p = soup.polygons[f];
+      const auto at = std::find(p.begin(), p.end(), c[0]) - p.begin();
+      ASSERT_LT(at, 3) << file << " face " << f;
+      ASSERT_EQ(c[1], p[(at + 1) % 3]) << file << " face " << f;
+      ASSERT_EQ(c[2], p[(at + 2) % 3]) << file << " face " << f;
+    }
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Results
+
+TEST_F(Tool, txt_output_on_the_elephant)
+{
+  const std::vector<double> d = distances("distances '" + elephant + "' --source 0");
+  ASSERT_EQ(d.size(), 2775u);
+  EXPECT_EQ(lines_of(read_text(path("d.txt")))[0], "0");
+  for(std::size_t i = 0; i < d.size(); ++i) {
+    EXPECT_TRUE(std::isfinite(d[i])) << "vertex " << i;
+    EXPECT_GE(d[i], 0.) << "vertex " << i;
+  }
+  EXPECT_GT(*std::max_element(d.begin(), d.end()), 0.5);
+
+  // the same on stdout, and the same as the library
+  const Result r = run("distances '" + elephant + "' --source 0");
+  EXPECT_EQ(r.exit_code, 0);
+  EXPECT_EQ(r.out, read_text(path("d.txt")));
+  EXPECT_EQ(r.err, "");
+  const Mesh mesh = soup_to_mesh(read_soup(elephant));
+  expect_same_distances(d, library_distances(mesh, Vertex_index(0)));
+}
+
+TEST_F(Tool, ply_output_holds_the_txt_distances)
+{
+  const std::vector<double> d = distances("distances '" + elephant + "' --source 17");
+  ASSERT_EQ(run("distances '" + elephant + "' --source 17 --output d.ply").exit_code, 0);
+  Mesh mesh;
+  std::ifstream in(path("d.ply"), std::ios::binary);
+  ASSERT_TRUE(CGAL::IO::read_PLY(in, mesh));
+  ASSERT_EQ(mesh.number_of_vertices(), 2775u);
+  ASSERT_EQ(mesh.number_of_faces(), 5558u);
+  const auto [ply_distance, has_distance] = mesh.property_map<Vertex_index, double>("v:distance");
+  ASSERT_TRUE(has_distance) << "no vertex property 'distance' in the PLY file";
+  std::vector<double> from_ply;
+  for(Vertex_index v : mesh.vertices())
+    from_ply.push_back(ply_distance[v]);
+  expect_same_distances(from_ply, d);
+
+  // the geometry is the file's, and the ramp goes from blue (near) to red (far)
+  const Soup soup = read_soup(elephant);
+  for(Vertex_index v : mesh.vertices())
+    ASSERT_EQ(mesh.point(v), soup.points[v]) << "vertex " << v;
+  const auto [color, has_color] = mesh.property_map<Vertex_index, CGAL::IO::Color>("v:color");
+  ASSERT_TRUE(has_color);
+  EXPECT_EQ(color[Vertex_index(17)], CGAL::IO::Color(0, 0, 255));
+  const Vertex_index far(static_cast<Mesh::size_type>(std::max_element(d.begin(), d.end()) - d.begin()));
+  EXPECT_EQ(color[far], CGAL::IO::Color(255, 0, 0));
+}
+
+// Barycentric coordinates on the command line follow the file's order of the face's vertices,
+// which is not the library's order (source(halfedge(f)) first).
+TEST_F(Tool, face_point_coordinates_follow_the_file_order)
+{
+  const Soup soup = read_soup(elephant);
+  const Mesh mesh = soup_to_mesh(soup);
+  const std::size_t face = 12;
+  const std::array<double, 3> b{{0.2, 0.3, 0.5}};
+  const std::vector<std::size_t>& polygon = soup.polygons[face];
+  const std::array<std::size_t, 3> corners = library_corners(mesh, Face_index(face));
+  ASSERT_NE(corners[0], polygon[0]) << "this face does not tell the two orders apart";
+
+  const std::vector<double> d = distances("distances '" + elephant + "' --source f:12:0.2:0.3:0.5");
+  ASSERT_EQ(d.size(), 2775u);
+
+  // Inside its face the point sees the face's corners in a straight line.
+  const Point p = CGAL::barycenter(soup.points[polygon[0]], b[0], soup.points[polygon[1]], b[1],
+                                   soup.points[polygon[2]], b[2]);
+  for(std::size_t v : polygon)
+    EXPECT_NEAR(d[v], std::sqrt(CGAL::squared_distance(p, soup.points[v])), 1e-12) << "corner " << v;
+  // (and the coordinates taken in the library's order would be a different point)
+  const Point q = CGAL::barycenter(soup.points[corners[0]], b[0], soup.points[corners[1]], b[1],
+                                   soup.points[corners[2]], b[2]);
+  EXPECT_GT(std::sqrt(CGAL::squared_distance(p, q)), 1e-3);
+
+  // The library given the same point in its own order.
+  std::array<double, 3> library_b{};
+  for(int k = 0; k < 3; ++k)
+    library_b[k] = b[std::find(polygon.begin(), polygon.end(), corners[k]) - polygon.begin()];
+  expect_same_distances(d, library_distances(mesh, std::make_pair(Face_index(face), library_b)));
+}
+
+TEST_F(Tool, several_sources_give_the_nearest_distance)
+{
+  const std::string mesh = "distances '" + elephant + "'";
+  const std::vector<double> a = distances(mesh + " --source 100");
+  const std::vector<double> b = distances(mesh + " --source f:40:0.6:0.3:0.1");
+  const std::vector<double> both = distances(mesh + " --source 100,f:40:0.6:0.3:0.1");
+  ASSERT_EQ(a.size(), 2775u);
+  std::vector<double> nearest(a.size());
+  for(std::size_t i = 0; i < a.size(); ++i)
+    nearest[i] = std::min(a[i], b[i]);
+  expect_same_distances(both, nearest, 1e-12);
+  EXPECT_EQ(both[100], 0.);
+
+  // repeated --source options and duplicates are accepted
+  expect_same_distances(distances(mesh + " --source 100 --source f:40:0.6:0.3:0.1,100"), both, 1e-12);
+  expect_same_distances(distances(mesh + " --source 100,100"), a);
+}
+
+TEST_F(Tool, max_distance_leaves_far_vertices_at_infinity)
+{
+  const std::vector<double> full = distances("distances '" + elephant + "' --source 0");
+  const double limit = 0.3;
+  const std::vector<double> near = distances("distances '" + elephant + "' --source 0 --max-distance 0.3");
+  ASSERT_EQ(near.size(), full.size());
+  std::size_t far = 0;
+  for(std::size_t i = 0; i < full.size(); ++i) {
+    if(full[i] > limit) {
+      ++far;
+      EXPECT_EQ(near[i], infinity) << "vertex " << i;
+    } else {
+      EXPECT_EQ(near[i], full[i]) << "vertex " << i;
+    }
+  }
+  EXPECT_GT(far, 100u);
+  EXPECT_LT(far, full.size() - 100);
+  const std::vector<std::string> lines = lines_of(read_text(path("d.txt")));
+  EXPECT_NE(std::find(lines.begin(), lines.end(), "inf"), lines.end());
+}
+
+TEST_F(Tool, stats_on_stderr)
+{
+  const Result r = run("distances '" + elephant + "' --source 0,f:3:0.2:0.2:0.6 --stats --output d.txt");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::vector<double> d = parse_distances(read_text(path("d.txt")));
+  const auto kv = parse_key_values(r.err);
+  for(const char* key : {"vertices", "faces", "sources", "seconds_read", "seconds_setup", "seconds_solve",
+                         "windows_created", "peak_windows", "peak_rss_mb", "max_distance"}) {
+    ASSERT_EQ(kv.count(key), 1u) << "missing " << key << " in:\n" << r.err;
+    char* end = nullptr;
+    const double value = std::strtod(kv.at(key).c_str(), &end);
+    EXPECT_TRUE(*end == '\0' && std::isfinite(value) && value >= 0) << key << "=" << kv.at(key);
+  }
+  EXPECT_EQ(kv.size(), 10u);
+  EXPECT_EQ(kv.at("vertices"), "2775");
+  EXPECT_EQ(kv.at("faces"), "5558");
+  EXPECT_EQ(kv.at("sources"), "2");
+  EXPECT_GT(std::stod(kv.at("windows_created")), 0);
+  EXPECT_GT(std::stod(kv.at("peak_windows")), 0);
+  EXPECT_GT(std::stod(kv.at("peak_rss_mb")), 1);
+  EXPECT_EQ(std::stod(kv.at("max_distance")), *std::max_element(d.begin(), d.end()));
+}
+
+// Two tetrahedra: a source on one leaves the other at infinity, which is not an error.
+TEST_F(Tool, other_component_is_unreachable)
+{
+  std::string off = "OFF\n8 8 0\n";
+  for(double x : {0., 10.})
+    off += std::to_string(x) + " 0 0\n" + std::to_string(x + 1) + " 0 0\n" + std::to_string(x) + " 1 0\n" +
+           std::to_string(x) + " 0 1\n";
+  for(int o : {0, 4})
+    for(const auto& t : {std::array<int, 3>{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}})
+      off += "3 " + std::to_string(t[0] + o) + " " + std::to_string(t[1] + o) + " " + std::to_string(t[2] + o) + "\n";
+  write("two.off", off);
+  const std::vector<double> d = distances("distances two.off --source 0");
+  ASSERT_EQ(d.size(), 8u);
+  EXPECT_EQ(d[0], 0.);
+  EXPECT_NEAR(d[1], 1., 1e-15);
+  EXPECT_NEAR(d[2], 1., 1e-15);
+  EXPECT_NEAR(d[3], 1., 1e-15);
+  for(int v = 4; v < 8; ++v)
+    EXPECT_EQ(d[v], infinity) << "vertex " << v;
+  EXPECT_EQ(lines_of(read_text(path("d.txt")))[4], "inf");
+}
+
+TEST_F(Tool, no_arguments)
+{
+  const Result r = run("");
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_EQ(r.err, "error: a subcommand is required (see geodesic --help)\n");
+}
+
+TEST_F(Tool, help)
+{
+  for(const std::string& args : {"--help", "distances --help"}) {
+    const Result r = run(args);
+    EXPECT_EQ(r.exit_code, 0) << args;
+    EXPECT_NE(r.out.find("distances"), std::string::npos) << args;
+    EXPECT_NE(r.out.find(args == "--help" ? "SUBCOMMAND" : "--max-distance"), std::string::npos) << r.out;
+  }
+}
+
+// An error while writing (here the target is a folder) leaves no temporary file behind.
+TEST_F(Tool, failed_write_leaves_no_file)
+{
+  fs::create_directory(path("d.txt"));
+  const Result r = run("distances '" + elephant + "' --source 0 --output d.txt");
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_EQ(r.err.rfind("error: ", 0), 0u) << r.err;
+  EXPECT_EQ(files(), std::set<std::string>{"d.txt"});
+  EXPECT_TRUE(fs::is_directory(path("d.txt")));
+}
+
+// ---------------------------------------------------------------------------------------------
+// Bad input: one line `error: ...` on stderr, a non-zero exit code, and no output file.
+
+struct Bad_case
+{
+  const char* name;
+  std::string args;   // the output option is appended
+  const char* output; // the output file, which must not appear
+  const char* message; // a piece of the expected error message
+};
+
+void PrintTo(const Bad_case& c, std::ostream* os) { *os << c.name; }
+
+std::string binary_ply_with_nan()
+{
+  std::string ply = "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty double x\n"
+                    "property double y\nproperty double z\nelement face 1\n"
+                    "property list uchar int vertex_indices\nend_header\n";
+  const double xyz[9] = {0, 0, 0, 1, 0, 0, 0, std::nan(""), 0};
+  ply.append(reinterpret_cast<const char*>(xyz), sizeof(xyz));
+  const unsigned char n = 3;
+  const std::int32_t ids[3] = {0, 1, 2};
+  ply.append(reinterpret_cast<const char*>(&n), 1);
+  ply.append(reinterpret_cast<const char*>(ids), sizeof(ids));
+  return ply;
+}
+
+const std::string triangle_points = "0 0 0\n1 0 0\n0 1 0\n";
+
+const std::vector<std::pair<std::string, std::string>> bad_files = {
+  {"quad.off", "OFF\n4 1 0\n" + triangle_points + "1 1 0\n4 0 1 3 2\n"},
+  // edge (0, 1) in three triangles
+  {"edge3.off", "OFF\n5 3 0\n" + triangle_points + "0 -1 0\n0 0 1\n3 0 1 2\n3 1 0 3\n3 1 0 4\n"},
+  // two triangles touching at vertex 0 only
+  {"bowtie.off", "OFF\n5 2 0\n" + triangle_points + "-1 0 0\n0 -1 0\n3 0 1 2\n3 0 3 4\n"},
+  {"flipped.off", "OFF\n4 2 0\n" + triangle_points + "1 1 0\n3 0 1 2\n3 1 2 3\n"},
+  {"nan.ply", binary_ply_with_nan()},
+  {"nan.off", "OFF\n3 1 0\n0 0 0\n1 0 nan\n0 1 0\n3 0 1 2\n"},
+  {"empty.off", ""},
+  {"no_faces.off", "OFF\n3 0 0\n" + triangle_points},
+  {"flat.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n2 0 0\n3 0 1 2\n"},
+  {"mesh.stl", "solid x\nendsolid x\n"},
+  {"triangle.off", "OFF\n3 1 0\n" + triangle_points + "3 0 1 2\n"},
+};
+
+const std::string E = "distances '" + elephant + "'";
+
+const Bad_case bad_cases[] = {
+  {"quad", "distances quad.off --source 0", "d.txt", "face 0 has 4 vertices"},
+  {"non_manifold_edge", "distances edge3.off --source 0", "d.txt", "non-manifold edge (0, 1)"},
+  {"non_manifold_vertex", "distances bowtie.off --source 0", "d.txt", "non-manifold vertex 0"},
+  {"inconsistent_orientation", "distances flipped.off --source 0", "d.txt", "inconsistently oriented across edge (1, 2)"},
+  {"nan_coordinate", "distances nan.ply --source 0", "d.ply", "vertex 2 has a non-finite coordinate"},
+  {"nan_text", "distances nan.off --source 0", "d.txt", "cannot read mesh 'nan.off'"},
+  {"empty_file", "distances empty.off --source 0", "d.txt", "empty.off"},
+  {"no_faces", "distances no_faces.off --source 0", "d.txt", "no faces"},
+  {"degenerate_triangle", "distances flat.off --source 0", "d.txt", "degenerate"},
+  {"missing_file", "distances missing.off --source 0", "d.txt", "cannot read mesh 'missing.off'"},
+  {"unknown_mesh_format", "distances mesh.stl --source 0", "d.txt", "cannot read mesh 'mesh.stl'"},
+  {"unknown_output_format", "distances triangle.off --source 0", "d.vtk", "unknown output format"},
+  {"vertex_out_of_range", E + " --source 0,2775", "d.txt", "source '2775'"},
+  {"face_out_of_range", E + " --source f:5558:0.2:0.3:0.5", "d.ply", "source 'f:5558:0.2:0.3:0.5'"},
+  {"negative_vertex", E + " --source=-1", "d.txt", "source '-1'"},
+  {"malformed_vertex", E + " --source 12x", "d.txt", "source '12x'"},
+  {"face_point_too_short", E + " --source f:1:0.5:0.5", "d.txt", "source 'f:1:0.5:0.5'"},
+  {"face_point_not_a_number", E + " --source f:1:0.5:x:0.5", "d.txt", "source 'f:1:0.5:x:0.5'"},
+  {"face_point_nan", E + " --source f:1:nan:0.5:0.5", "d.txt", "source 'f:1:nan:0.5:0.5'"},
+  {"face_point_negative", E + " --source f:1:1.5:-0.5:0", "d.txt", "source 'f:1:1.5:-0.5:0'"},
+  {"face_point_bad_sum", E + " --source f:1:0.5:0.5:0.5", "d.txt", "source 'f:1:0.5:0.5:0.5'"},
+  {"negative_max_distance", E + " --source 0 --max-distance=-1", "d.txt", "max-distance"},
+  {"non_numeric_max_distance", E + " --source 0 --max-distance far", "d.txt", "max-distance"},
+  {"unknown_option", E + " --source 0 --colour", "d.txt", "--colour"},
+  {"unknown_subcommand", "distance '" + elephant + "' --source 0", "d.txt", "distance"},
+  {"no_subcommand", "", "d.txt", "not expected"},
+  {"missing_source", E, "d.txt", "--source"},
+  {"missing_mesh", "distances --source 0", "d.txt", "MESH"},
+};
+
+class Bad_input : public Tool, public ::testing::WithParamInterface<Bad_case>
+{
+protected:
+  void SetUp() override
+  {
+    Tool::SetUp();
+    for(const auto& [name, content] : bad_files)
+      write(name, content);
+  }
+
+  void expect_error(const Result& r) const
+  {
+    const Bad_case& c = GetParam();
+    EXPECT_NE(r.exit_code, 0);
+    EXPECT_EQ(r.err.rfind("error: ", 0), 0u) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "not one line: " << r.err;
+    EXPECT_NE(r.err.find(c.message), std::string::npos) << "expected '" << c.message << "' in: " << r.err;
+    EXPECT_EQ(r.out, "");
+  }
+};
+
+TEST_P(Bad_input, fails_cleanly)
+{
+  const Bad_case& c = GetParam();
+  const std::set<std::string> before = files();
+  const std::string args = c.args + " --output " + c.output;
+  expect_error(run(args));
+  EXPECT_EQ(files(), before) << "the output file or a temporary file was left behind";
+
+  // an existing output file is not touched
+  write(c.output, "previous content\n");
+  expect_error(run(args));
+  EXPECT_EQ(read_text(path(c.output)), "previous content\n");
+  std::set<std::string> with_output = before;
+  with_output.insert(c.output);
+  EXPECT_EQ(files(), with_output);
+}
+
+INSTANTIATE_TEST_SUITE_P(Tool, Bad_input, ::testing::ValuesIn(bad_cases),
+                         [](const ::testing::TestParamInfo<Bad_case>& info) { return info.param.name; });
+
+// The control case of the table above: the same small files do work when they are good.
+TEST_F(Tool, a_good_triangle_works)
+{
+  write("triangle.off", "OFF\n3 1 0\n" + triangle_points + "3 0 1 2\n");
+  const std::vector<double> d = distances("distances triangle.off --source f:0:0:0.5:0.5");
+  ASSERT_EQ(d.size(), 3u);
+  EXPECT_NEAR(d[0], std::sqrt(0.5), 1e-15);
+  EXPECT_NEAR(d[1], std::sqrt(0.5), 1e-15);
+  EXPECT_NEAR(d[2], std::sqrt(0.5), 1e-15);
+}
+
+} // namespace
