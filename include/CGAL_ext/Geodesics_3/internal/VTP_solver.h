@@ -224,8 +224,9 @@ private:
   void insert_window(int h, Window w)
   {
     const double length = m_mesh.frame[h].length;
-    if(!trim_by_edge_vertices(w, length, m_distance[m_mesh.source(h)], m_distance[m_mesh.target(h)]) ||
-       window_key(w) > m_limit_cache)
+    double key;
+    if(!trim_by_edge_vertices(w, length, m_distance[m_mesh.source(h)], m_distance[m_mesh.target(h)], key) ||
+       key > m_limit_cache)
       return;
     const std::int32_t i = m_pool.allocate(w);
     m_pool[i].next = -1;
@@ -379,9 +380,11 @@ private:
     const double d_from = m_distance[m_mesh.source(h)];
     const double d_to = m_distance[m_mesh.target(h)];
     std::size_t n = 0;
-    for(Window w : m_scratch)
-      if(trim_by_edge_vertices(w, f.length, d_from, d_to) && window_key(w) <= m_limit_cache)
+    for(Window w : m_scratch) {
+      double key;
+      if(trim_by_edge_vertices(w, f.length, d_from, d_to, key) && key <= m_limit_cache)
         m_scratch[n++] = w;
+    }
     m_scratch.resize(n);
     if(n == 0)
       return;

@@ -47,26 +47,28 @@ inline double window_key(const Window& w)
 /// D(x) - x is non-increasing and D(x) + x non-decreasing, so the part beaten by the source
 /// vertex of the half-edge is an initial segment and the part beaten by its target a final one.
 /// `d_from`/`d_to` are the current distances of the source/target vertex of the half-edge.
-/// Returns false when nothing is left.
-inline bool trim_by_edge_vertices(Window& w, double length, double d_from, double d_to)
+/// Returns false when nothing is left; otherwise `key` is the window's smallest distance.
+inline bool trim_by_edge_vertices(Window& w, double length, double d_from, double d_to, double& key)
 {
   const double r2 = w.sx * w.sx + w.sy * w.sy;
-  if(distance_at(w, w.b1) - w.b1 > d_from)
+  double at_b0 = distance_at(w, w.b0), at_b1 = distance_at(w, w.b1);
+  if(at_b1 - w.b1 > d_from || at_b0 + w.b0 > d_to + length)
     return false;
-  if(distance_at(w, w.b0) - w.b0 > d_from) {
+  if(at_b0 - w.b0 > d_from) {
     // sigma + |s - x| = d_from + x
     const double k = d_from - w.sigma;
     const double x = (r2 - k * k) / (2 * (k + w.sx));
     w.b0 = std::min(std::max(x, w.b0), w.b1);
+    at_b0 = distance_at(w, w.b0);
   }
-  if(distance_at(w, w.b0) + w.b0 > d_to + length)
-    return false;
-  if(distance_at(w, w.b1) + w.b1 > d_to + length) {
+  if(at_b1 + w.b1 > d_to + length) {
     // sigma + |s - x| = d_to + length - x
     const double m = d_to + length - w.sigma;
     const double x = (m * m - r2) / (2 * (m - w.sx));
     w.b1 = std::max(std::min(x, w.b1), w.b0);
+    at_b1 = distance_at(w, w.b1);
   }
+  key = (w.sx > w.b0 && w.sx < w.b1) ? w.sigma - w.sy : std::min(at_b0, at_b1);
   return w.b1 > w.b0;
 }
 
