@@ -1,0 +1,342 @@
+// Copyright (c) 2026 The CGAL_ext geodesics developers.
+// Exact distances on developable and simple polyhedral surfaces, where the geodesic distance is
+// known in closed form: planar grids, an open cylinder, cones, a cube and a tetrahedron.
+
+#include "test_support.h"
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+using namespace test_support;
+
+namespace {
+
+const double pi = 3.14159265358979323846;
+
+// Sources: vertices, and face locations whose developed position is the barycentric
+// combination of the developed corners.
+struct Source
+{
+  std::vector<Vertex> vertices;
+  std::vector<Face_location> faces;
+};
+
+// The developed position of a face location. Faces that straddle the seam of a periodic
+// development (cylinder, cone) have corners developed on both ends: `unwrap` moves each corner
+// next to the first one before combining.
+template <class Unwrap>
+Point_2 developed_location(const Mesh& m, const Face_location& l, Unwrap unwrap)
+{
+  const auto dev = developed_map(m);
+  const auto c = face_corners(m, l.first);
+  const Point_2 p0 = get(dev, c[0]);
+  const Point_2 p1 = unwrap(p0, get(dev, c[1]));
+  const Point_2 p2 = unwrap(p0, get(dev, c[2]));
+  return Point_2(l.second[0] * p0.x() + l.second[1] * p1.x() + l.second[2] * p2.x(),
+                 l.second[0] * p0.y() + l.second[1] * p1.y() + l.second[2] * p2.y());
+}
+
+// The exact distance field: the minimum over the sources of `distance(source position, vertex
+// position)` in the development.
+template <class Distance, class Unwrap>
+std::vector<double> exact_field(const Mesh& m, const Source& s, Distance distance, Unwrap unwrap)
+{
+  const auto dev = developed_map(m);
+  std::vector<Point_2> from;
+  for(Vertex v : s.vertices)
+    from.push_back(get(dev, v));
+  for(const Face_location& l : s.faces)
+    from.push_back(developed_location(m, l, unwrap));
+  std::vector<double> d(m.number_of_vertices(), inf);
+  for(Vertex v : m.vertices())
+    for(const Point_2& p : from)
+      d[v.idx()] = std::min(d[v.idx()], distance(p, get(dev, v)));
+  return d;
+}
+
+auto no_unwrap = [](const Point_2&, const Point_2& q) { return q; };
+
+std::vector<double> solve_sources(const Mesh& m, const Source& s) { return solve_mixed(m, s.vertices, s.faces); }
+
+// ---------------------------------------------------------------------------------------------
+// Planar grids: the geodesic distance is the Euclidean one in a convex domain; in the L-shaped
+// domain, a target hidden from the source is reached around the reflex corner.
+
+struct Planar_case
+{
+  const char* name;
+  double jitter;
+  bool l_shape;
+  int source; // 0: interior vertex, 1: corner vertex, 2: face interior, 3: point on an edge, 4: two vertices
+};
+
+std::ostream& operator<<(std::ostream& os, const Planar_case& c) { return os << c.name; }
+
+class Planar : public ::testing::TestWithParam<Planar_case> {};
+
+// Whether the open segment pq passes through the removed open quadrant {x > c.x, y > c.y}.
+bool blocked(const Point_2& p, const Point_2& q, const Point_2& c)
+{
+  double lo = 0, hi = 1;
+  for(int axis = 0; axis < 2; ++axis) {
+    const double a = axis ? p.y() : p.x(), b = axis ? q.y() : q.x(), t = axis ? c.y() : c.x();
+    if(a == b) {
+      if(!(a > t))
+        return false;
+      continue;
+    }
+    const double cross = (t - a) / (b - a); // where the coordinate equals t
+    if(b > a)
+      lo = std::max(lo, cross);
+    else
+      hi = std::min(hi, cross);
+  }
+  return lo < hi - 1e-15;
+}
+
+TEST_P(Planar, EuclideanDistance)
+{
+  const Planar_case& c = GetParam();
+  const int n = 30;
+  const double h = 0.1;
+  const Mesh m = make_grid(n, h, c.jitter, c.l_shape);
+  for(Face f : m.faces()) { // the jittered grid must still be a flat, unfolded domain
+    const auto t = face_corners(m, f);
+    ASSERT_EQ(CGAL::orientation(Point_2(m.point(t[0]).x(), m.point(t[0]).y()),
+                                Point_2(m.point(t[1]).x(), m.point(t[1]).y()),
+                                Point_2(m.point(t[2]).x(), m.point(t[2]).y())),
+              CGAL::LEFT_TURN)
+      << "face " << f << " is flipped";
+  }
+  const int half = (n - 1) / 2;
+  const Point_2 corner(half * h, half * h);
+  // vertex indices: the grid is numbered row by row (rows shortened in the L's upper half)
+  Vertex interior, grid_corner(0);
+  for(Vertex v : m.vertices()) {
+    const Point& p = m.point(v);
+    if(std::abs(p.x() - 7 * h) < 0.5 * h && std::abs(p.y() - 11 * h) < 0.5 * h)
+      interior = v;
+  }
+  ASSERT_TRUE(interior.is_valid());
+  Source s;
+  switch(c.source) {
+  case 0: s.vertices = {interior}; break;
+  case 1: s.vertices = {grid_corner}; break;
+  case 2: s.faces = {location(37, 0.2, 0.3)}; break;
+  case 3: s.faces = {location(101, 0.35, 0.65)}; break;
+  default: s.vertices = {interior, Vertex(static_cast<Mesh::size_type>(m.number_of_vertices() - 1))};
+  }
+  auto distance = [&](const Point_2& p, const Point_2& q) {
+    if(c.l_shape && blocked(p, q, corner))
+      return std::sqrt(CGAL::squared_distance(p, corner)) + std::sqrt(CGAL::squared_distance(corner, q));
+    return std::sqrt(CGAL::squared_distance(p, q));
+  };
+  const std::vector<double> exact = exact_field(m, s, distance, no_unwrap);
+  EXPECT_TRUE(agrees_relative(solve_sources(m, s), exact, 1e-12, c.name));
+}
+
+INSTANTIATE_TEST_SUITE_P(
+  Analytic, Planar,
+  ::testing::Values(Planar_case{"grid_vertex", 0, false, 0}, Planar_case{"grid_corner", 0, false, 1},
+                    Planar_case{"grid_face", 0, false, 2}, Planar_case{"grid_edge", 0, false, 3},
+                    Planar_case{"grid_two_vertices", 0, false, 4},
+                    Planar_case{"jittered_vertex", 0.2, false, 0}, Planar_case{"jittered_corner", 0.2, false, 1},
+                    Planar_case{"jittered_face", 0.2, false, 2}, Planar_case{"jittered_edge", 0.2, false, 3},
+                    Planar_case{"L_vertex", 0, true, 0}, Planar_case{"L_corner", 0, true, 1},
+                    Planar_case{"L_face", 0, true, 2}, Planar_case{"L_jittered_vertex", 0.2, true, 0},
+                    Planar_case{"L_jittered_two_vertices", 0.2, true, 4}),
+  [](const ::testing::TestParamInfo<Planar_case>& i) { return std::string(i.param.name); });
+
+// ---------------------------------------------------------------------------------------------
+// The open polyhedral cylinder develops isometrically into a strip of width W = n * chord,
+// periodic in its first coordinate; the strip is convex across its height, so the distance is
+// the smallest planar distance between the source and the copies of the target shifted by W.
+
+struct Cylinder_case
+{
+  const char* name;
+  int segments, rows;
+  int source; // 0: bottom border vertex, 1: middle vertex, 2: face interior, 3: point on an edge, 4: mixed
+};
+
+std::ostream& operator<<(std::ostream& os, const Cylinder_case& c) { return os << c.name; }
+
+class Cylinder : public ::testing::TestWithParam<Cylinder_case> {};
+
+TEST_P(Cylinder, UnrolledStripDistance)
+{
+  const Cylinder_case& c = GetParam();
+  const double r = 1.5, height = 4;
+  const Mesh m = make_cylinder(r, c.segments, height, c.rows);
+  const double width = c.segments * 2 * r * std::sin(pi / c.segments);
+  const std::size_t nf = m.number_of_faces();
+  Source s;
+  const Vertex middle(static_cast<Mesh::size_type>((c.rows / 2) * c.segments + c.segments / 3));
+  switch(c.source) {
+  case 0: s.vertices = {Vertex(0)}; break;
+  case 1: s.vertices = {middle}; break;
+  case 2: s.faces = {location(nf / 2 + 3, 0.25, 0.45)}; break;
+  case 3: s.faces = {location(nf / 3 + 1, 0., 0.4)}; break;
+  default:
+    s.vertices = {middle};
+    s.faces = {location(nf - 1, 0.3, 0.3)}; // a face on the seam (last column)
+  }
+  auto unwrap = [&](const Point_2& ref, const Point_2& q) {
+    if(q.x() - ref.x() > width / 2)
+      return Point_2(q.x() - width, q.y());
+    if(ref.x() - q.x() > width / 2)
+      return Point_2(q.x() + width, q.y());
+    return q;
+  };
+  auto distance = [&](const Point_2& p, const Point_2& q) {
+    double best = inf;
+    for(int shift = -2; shift <= 2; ++shift)
+      best = std::min(best, std::hypot(q.x() - p.x() + shift * width, q.y() - p.y()));
+    return best;
+  };
+  EXPECT_TRUE(agrees_relative(solve_sources(m, s), exact_field(m, s, distance, unwrap), 1e-12, c.name));
+}
+
+INSTANTIATE_TEST_SUITE_P(Analytic, Cylinder,
+                         ::testing::Values(Cylinder_case{"border_vertex", 24, 10, 0},
+                                           Cylinder_case{"middle_vertex", 24, 10, 1},
+                                           Cylinder_case{"face", 24, 10, 2}, Cylinder_case{"edge", 24, 10, 3},
+                                           Cylinder_case{"mixed_on_seam", 24, 10, 4},
+                                           Cylinder_case{"coarse_border_vertex", 7, 3, 0},
+                                           Cylinder_case{"fine_middle_vertex", 64, 40, 1}),
+                         [](const ::testing::TestParamInfo<Cylinder_case>& i) { return std::string(i.param.name); });
+
+// ---------------------------------------------------------------------------------------------
+// The polyhedral cone develops into a sector of angle theta around the apex. From the apex, the
+// distance is the slant distance. When theta < pi the development cut along any generator is
+// convex, so between two points at polar (r1, a1), (r2, a2) the distance is the planar one for
+// the smaller of the two angular gaps |a1 - a2| and theta - |a1 - a2|.
+
+struct Cone_case
+{
+  const char* name;
+  double radius, height;
+  int segments, rings;
+  int source; // 0: apex, 1: rim vertex, 2: interior vertex, 3: face interior, 4: rim and face
+};
+
+std::ostream& operator<<(std::ostream& os, const Cone_case& c) { return os << c.name; }
+
+class Cone : public ::testing::TestWithParam<Cone_case> {};
+
+TEST_P(Cone, DevelopedSectorDistance)
+{
+  const Cone_case& c = GetParam();
+  double theta = 0;
+  const Mesh m = make_cone(c.radius, c.height, c.segments, c.rings, &theta);
+  if(c.source != 0)
+    ASSERT_LT(theta, pi) << "the closed form below needs a sector narrower than pi";
+  auto vertex = [&](int k, int j) { return Vertex(static_cast<Mesh::size_type>(1 + (j - 1) * c.segments + k)); };
+  const std::size_t nf = m.number_of_faces();
+  Source s;
+  switch(c.source) {
+  case 0: s.vertices = {Vertex(0)}; break;
+  case 1: s.vertices = {vertex(c.segments / 4, c.rings)}; break;
+  case 2: s.vertices = {vertex(c.segments / 2, c.rings / 2)}; break;
+  case 3: s.faces = {location(nf / 2 + 5, 0.2, 0.5)}; break;
+  default:
+    s.vertices = {vertex(1, c.rings)};
+    s.faces = {location(nf - 2, 0.4, 0.35)}; // near the seam
+  }
+  // Developed vertices are at angles in [0, theta); an unwrapped face location may lie slightly
+  // below 0 or beyond theta: only angle differences modulo theta matter.
+  auto polar_angle = [&](const Point_2& p) { return std::atan2(p.y(), p.x()); };
+  auto unwrap = [&](const Point_2& ref, const Point_2& q) {
+    // put q at an angle within theta / 2 of ref's by turning it by +- theta
+    const double d = polar_angle(q) - polar_angle(ref);
+    const double turn = d > theta / 2 ? -theta : (d < -theta / 2 ? theta : 0.);
+    return Point_2(q.x() * std::cos(turn) - q.y() * std::sin(turn), q.x() * std::sin(turn) + q.y() * std::cos(turn));
+  };
+  auto distance = [&](const Point_2& p, const Point_2& q) {
+    const double r1 = std::hypot(p.x(), p.y()), r2 = std::hypot(q.x(), q.y());
+    if(r1 == 0 || r2 == 0)
+      return r1 + r2;
+    double gap = std::fmod(std::abs(polar_angle(p) - polar_angle(q)), theta);
+    gap = std::min(gap, theta - gap);
+    if(gap >= pi)
+      return r1 + r2; // through the apex
+    return std::sqrt(std::max(0., r1 * r1 + r2 * r2 - 2 * r1 * r2 * std::cos(gap)));
+  };
+  EXPECT_TRUE(agrees_relative(solve_sources(m, s), exact_field(m, s, distance, unwrap), 1e-12, c.name));
+}
+
+INSTANTIATE_TEST_SUITE_P(Analytic, Cone,
+                         ::testing::Values(Cone_case{"flat_cone_apex", 2, 1, 40, 12, 0},
+                                           Cone_case{"narrow_cone_apex", 1, 4, 32, 10, 0},
+                                           Cone_case{"narrow_cone_rim_vertex", 1, 4, 32, 10, 1},
+                                           Cone_case{"narrow_cone_interior_vertex", 1, 4, 32, 10, 2},
+                                           Cone_case{"narrow_cone_face", 1, 4, 32, 10, 3},
+                                           Cone_case{"narrow_cone_rim_and_face", 1, 4, 32, 10, 4},
+                                           Cone_case{"coarse_narrow_cone_rim_vertex", 1, 3, 9, 2, 1}),
+                         [](const ::testing::TestParamInfo<Cone_case>& i) { return std::string(i.param.name); });
+
+// ---------------------------------------------------------------------------------------------
+// Cube [0, s]^3 from the corner O = (0, 0, 0). A point on one of the three faces through O is at
+// its Euclidean distance. A point (s, y, z) of the far face x = s is reached across the face
+// y = 0 or the face z = 0: unfolded, at distance min(hypot(s + y, z), hypot(s + z, y)) (and
+// symmetrically for the faces y = s, z = s). So the adjacent corners are at s, the far corners
+// of the three faces through O at s sqrt(2), and the opposite corner (s, s, s) at s sqrt(5).
+
+class Cube : public ::testing::TestWithParam<int> {};
+
+TEST_P(Cube, DistancesFromACorner)
+{
+  const int n = GetParam();
+  const double side = 2.5;
+  const Mesh m = make_cube(side, n);
+  ASSERT_EQ(m.point(Vertex(0)), Point(0, 0, 0));
+  std::vector<double> exact(m.number_of_vertices(), inf);
+  for(Vertex v : m.vertices()) {
+    const Point& p = m.point(v);
+    const double c[3] = {p.x(), p.y(), p.z()};
+    if(std::min({c[0], c[1], c[2]}) == 0) {
+      exact[v.idx()] = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+      continue;
+    }
+    for(int axis = 0; axis < 3; ++axis)
+      if(c[axis] == side) {
+        const double y = c[(axis + 1) % 3], z = c[(axis + 2) % 3];
+        exact[v.idx()] = std::min({exact[v.idx()], std::hypot(side + y, z), std::hypot(side + z, y)});
+      }
+  }
+  const std::vector<double> d = solve(m, Vertex(0));
+  EXPECT_TRUE(agrees_relative(d, exact, 1e-12, "cube n=" + std::to_string(n)));
+  // the corners by name
+  for(Vertex v : m.vertices()) {
+    const Point& p = m.point(v);
+    const int at_side = (p.x() == side) + (p.y() == side) + (p.z() == side);
+    const int at_zero = (p.x() == 0) + (p.y() == 0) + (p.z() == 0);
+    if(at_side + at_zero != 3)
+      continue;
+    const double expected = at_side == 0 ? 0 : at_side == 1 ? side : at_side == 2 ? side * std::sqrt(2.) : side * std::sqrt(5.);
+    EXPECT_NEAR(d[v.idx()], expected, 1e-12 * side) << "corner " << p;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Analytic, Cube, ::testing::Values(1, 2, 5, 12));
+
+// A regular tetrahedron of edge a: from a vertex every other vertex is at a; from the centre of
+// a face, its corners are at a / sqrt(3) and the opposite vertex, reached across an edge midpoint
+// in the unfolding (the net is a triangle of side 2a), at 2a / sqrt(3).
+TEST(AnalyticTetrahedron, VertexAndFaceCentreSources)
+{
+  const double a = 3;
+  const Mesh m = make_tetrahedron(a);
+  EXPECT_TRUE(agrees_relative(solve(m, Vertex(2)), {a, a, 0, a}, 1e-12, "tetrahedron from a vertex"));
+  for(Face f : m.faces()) {
+    const auto corners = face_corners(m, f);
+    std::vector<double> exact(4, 2 * a / std::sqrt(3.));
+    for(Vertex v : corners)
+      exact[v.idx()] = a / std::sqrt(3.);
+    EXPECT_TRUE(agrees_relative(solve(m, Face_location(f, Barycentric{{1. / 3, 1. / 3, 1. / 3}})), exact, 1e-12,
+                                "tetrahedron from the centre of face " + std::to_string(f.idx())));
+  }
+}
+
+} // namespace

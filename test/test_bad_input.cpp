@@ -1,0 +1,217 @@
+// Copyright (c) 2026 The CGAL_ext geodesics developers.
+// Bad input: each case must throw CGAL_ext::Geodesic_error whose message names the problem and
+// where it is.
+
+#include "test_support.h"
+
+#include <limits>
+#include <string>
+#include <vector>
+
+using namespace test_support;
+namespace params = CGAL_ext::parameters;
+
+namespace {
+
+const double nan = std::numeric_limits<double>::quiet_NaN();
+
+// A small valid mesh to break: the 6 x 6 planar grid (36 vertices, 50 faces).
+Mesh small_grid() { return make_grid(6, 1.); }
+
+void solve_quietly(const Mesh& m)
+{
+  solve(m, Vertex(0));
+}
+
+TEST(BadInput, EmptyMesh)
+{
+  const Mesh empty;
+  EXPECT_TRUE(throws_geodesic_error([&] { solve(empty, std::vector<Vertex>{Vertex(0)}); }, {"empty", "0 vertices"}));
+  // vertices without faces are no surface either
+  Mesh points_only;
+  points_only.add_vertex(Point(0, 0, 0));
+  points_only.add_vertex(Point(1, 0, 0));
+  EXPECT_TRUE(throws_geodesic_error([&] { solve_quietly(points_only); }, {"empty", "0 faces"}));
+}
+
+TEST(BadInput, QuadFace)
+{
+  Mesh m = small_grid();
+  // a quad sharing an edge with the grid's border: grid vertices 4 -> 5 run along y = 0
+  const Vertex a(4), b(5);
+  ASSERT_TRUE(m.is_border(m.opposite(m.halfedge(a, b))));
+  const Vertex c = m.add_vertex(Point(5, -1, 0)), d = m.add_vertex(Point(4, -1, 0));
+  const Face quad = m.add_face(b, a, d, c);
+  ASSERT_TRUE(quad.is_valid());
+  EXPECT_TRUE(throws_geodesic_error([&] { solve_quietly(m); },
+                                    {"face " + std::to_string(quad.idx()) + " has 4 vertices", "triangle"}));
+}
+
+class Non_finite : public ::testing::TestWithParam<double> {};
+
+TEST_P(Non_finite, CoordinateIsRejected)
+{
+  Mesh m = small_grid();
+  const Vertex v(14);
+  m.point(v) = Point(m.point(v).x(), GetParam(), 0);
+  EXPECT_TRUE(throws_geodesic_error([&] { solve_quietly(m); }, {"vertex 14 ", "non-finite"}));
+}
+
+INSTANTIATE_TEST_SUITE_P(BadInput, Non_finite,
+                         ::testing::Values(nan, std::numeric_limits<double>::infinity(),
+                                           -std::numeric_limits<double>::infinity()));
+
+// A zero-area triangle inside a mesh: an interior grid vertex moved onto the segment joining
+// the two other corners of one of its faces.
+TEST(BadInput, DegenerateTriangle)
+{
+  Mesh m = small_grid();
+  const Vertex v(14); // interior: (2, 2)
+  ASSERT_FALSE(m.is_border(v));
+  const Face f = m.face(m.halfedge(v));
+  const auto c = face_corners(m, f);
+  std::vector<Vertex> others;
+  for(Vertex w : c)
+    if(w != v)
+      others.push_back(w);
+  m.point(v) = CGAL::midpoint(m.point(others[0]), m.point(others[1]));
+  ASSERT_TRUE(CGAL::collinear(m.point(c[0]), m.point(c[1]), m.point(c[2])));
+  // the first degenerate face in index order is the one to be named (f, unless moving v made
+  // another of its faces flat too)
+  Face first;
+  for(Face g : m.faces()) {
+    const auto t = face_corners(m, g);
+    if(CGAL::collinear(m.point(t[0]), m.point(t[1]), m.point(t[2]))) {
+      first = g;
+      break;
+    }
+  }
+  ASSERT_TRUE(first.is_valid());
+  EXPECT_TRUE(throws_geodesic_error([&] { solve_quietly(m); },
+                                    {"degenerate", "face " + std::to_string(first.idx()) + " ("}));
+}
+
+// Two vertices at the same place: an edge of length zero.
+TEST(BadInput, ZeroLengthEdge)
+{
+  Mesh m = small_grid();
+  const Vertex v(14), w(15);
+  ASSERT_TRUE(m.halfedge(v, w).is_valid());
+  m.point(v) = m.point(w);
+  EXPECT_TRUE(throws_geodesic_error([&] { solve_quietly(m); }, {"degenerate"}));
+}
+
+TEST(BadInput, SourceVertexOutOfRange)
+{
+  const Mesh m = small_grid();
+  EXPECT_TRUE(throws_geodesic_error([&] { solve(m, Vertex(1000000)); },
+                                    {"source vertex 1000000", "out of range", "36 vertices"}));
+  EXPECT_TRUE(throws_geodesic_error([&] { solve(m, std::vector<Vertex>{Vertex(1), Vertex(36)}); },
+                                    {"source vertex 36", "out of range"}));
+}
+
+TEST(BadInput, SourceFaceOutOfRange)
+{
+  const Mesh m = small_grid();
+  EXPECT_TRUE(throws_geodesic_error([&] { solve(m, location(1000000, 0.2, 0.2)); },
+                                    {"source face 1000000", "out of range", "50 faces"}));
+  EXPECT_TRUE(throws_geodesic_error([&] { solve(m, std::vector<Face_location>{location(3, 0.2, 0.2), location(50, 0.2, 0.2)}); },
+                                    {"source face 50", "out of range"}));
+}
+
+struct Bad_barycentric
+{
+  const char* name;
+  Barycentric b;
+};
+
+std::ostream& operator<<(std::ostream& os, const Bad_barycentric& c) { return os << c.name; }
+
+class Barycentric_coordinates : public ::testing::TestWithParam<Bad_barycentric> {};
+
+TEST_P(Barycentric_coordinates, AreRejected)
+{
+  const Mesh m = small_grid();
+  const Face_location l(Face(7), GetParam().b);
+  EXPECT_TRUE(throws_geodesic_error([&] { solve(m, l); }, {"barycentric", "face 7 ", "non-negative and sum to 1"}));
+}
+
+INSTANTIATE_TEST_SUITE_P(BadInput, Barycentric_coordinates,
+                         ::testing::Values(Bad_barycentric{"negative", {{-0.1, 0.6, 0.5}}},
+                                           Bad_barycentric{"slightly_negative", {{0.5, 0.5 + 1e-9, -1e-9}}},
+                                           Bad_barycentric{"sum_below_1", {{0.3, 0.3, 0.3}}},
+                                           Bad_barycentric{"sum_above_1", {{0.5, 0.5, 0.1}}},
+                                           Bad_barycentric{"all_zero", {{0., 0., 0.}}},
+                                           Bad_barycentric{"nan", {{nan, 0.5, 0.5}}},
+                                           Bad_barycentric{"infinite", {{std::numeric_limits<double>::infinity(), 0., 0.}}}),
+                         [](const ::testing::TestParamInfo<Bad_barycentric>& i) { return std::string(i.param.name); });
+
+TEST(BadInput, NegativeOrNanMaxDistance)
+{
+  const Mesh m = small_grid();
+  EXPECT_TRUE(throws_geodesic_error([&] { solve(m, Vertex(0), params::max_distance(-1.)); },
+                                    {"max distance", "non-negative", "-1"}));
+  EXPECT_TRUE(throws_geodesic_error([&] { solve(m, Vertex(0), params::max_distance(nan)); },
+                                    {"max distance", "non-negative"}));
+}
+
+TEST(BadInput, StopVertexOutOfRange)
+{
+  const Mesh m = small_grid();
+  EXPECT_TRUE(throws_geodesic_error(
+    [&] { solve(m, Vertex(0), params::stop_vertices(std::vector<Vertex>{Vertex(3), Vertex(1000000)})); },
+    {"stop vertex 1000000", "out of range", "36 vertices"}));
+}
+
+TEST(BadInput, NoSource)
+{
+  const Mesh m = small_grid();
+  EXPECT_TRUE(throws_geodesic_error([&] { solve(m, std::vector<Vertex>{}); }, {"no source"}));
+  EXPECT_TRUE(throws_geodesic_error([&] { solve(m, std::vector<Face_location>{}); }, {"no source"}));
+}
+
+TEST(BadInput, UnknownAlgorithm)
+{
+  const Mesh m = small_grid();
+  EXPECT_TRUE(throws_geodesic_error(
+    [&] { solve(m, Vertex(0), params::algorithm(static_cast<CGAL_ext::Geodesic_algorithm>(7))); },
+    {"unknown geodesic algorithm 7"}));
+}
+
+// Non-manifold vertices. Surface_mesh represents a vertex whose faces form several fans when
+// each fan is open (add_face refuses to attach a face to a vertex that is not on the border):
+// two triangles sharing only a vertex (a bowtie), or two cones sharing their apex. Such a
+// vertex is pinched: its neighbourhood is not a disk, and the solver rejects it.
+TEST(BadInput, PinchedVertexBowtie)
+{
+  const Mesh m = mesh_from_soup({Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(-1, 0, 0), Point(0, -1, 0)},
+                                {{0, 1, 2}, {0, 3, 4}});
+  ASSERT_EQ(m.number_of_faces(), 2u);
+  EXPECT_TRUE(throws_geodesic_error([&] { solve_quietly(m); }, {"non-manifold vertex 0"}));
+}
+
+TEST(BadInput, PinchedVertexTwoConesInAMesh)
+{
+  // the 6 x 6 grid with a second, open fan of 4 triangles hanging from its interior vertex 14
+  // is refused by Surface_mesh (vertex 14 is not on the border); hang it from the border
+  // vertex 3 instead, whose own fan is open
+  Mesh m = small_grid();
+  const Vertex apex(3);
+  ASSERT_TRUE(m.is_border(apex));
+  std::vector<Vertex> ring;
+  for(int k = 0; k < 5; ++k)
+    ring.push_back(m.add_vertex(Point(3 + 0.5 * std::cos(0.5 * k), 0.5 * std::sin(0.5 * k), 1)));
+  for(int k = 0; k + 1 < 5; ++k)
+    ASSERT_TRUE(m.add_face(apex, ring[k], ring[k + 1]).is_valid());
+  EXPECT_TRUE(throws_geodesic_error([&] { solve_quietly(m); }, {"non-manifold vertex 3"}));
+  // and Surface_mesh indeed refuses a second fan at an interior vertex
+  const Vertex interior(14), p = m.add_vertex(Point(2, 2, 1)), q = m.add_vertex(Point(2.5, 2, 1));
+  EXPECT_FALSE(m.add_face(interior, p, q).is_valid());
+}
+
+// A closed pinched vertex (two closed fans, e.g. two tetrahedra glued at a corner) cannot be
+// represented: Surface_mesh::add_face refuses a fan at a vertex that is not on the border (checked
+// above), and Polyhedron_incremental_builder_3 refuses it too ("at vertex 0 a closed surface
+// already exists and facet 4 is nonetheless adjacent"). That case is therefore not tested.
+
+} // namespace
