@@ -9,7 +9,9 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Surface_mesh.h>
+#ifndef CGAL_EXT_TEST_NO_ORACLE // the oracle is heavy to compile; test files that do not need it say so
 #include <CGAL/Surface_mesh_shortest_path.h>
+#endif
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/subdivision_method_3.h>
 
@@ -75,25 +77,22 @@ inline Mesh read_off(const std::string& path)
   return m;
 }
 
-/// one of CGAL's data meshes (elephant, fandisk, ...), read once per process
-inline const Mesh& cgal_mesh(const std::string& name)
+/// the mesh NAME.off of `folder`, read once per process
+inline const Mesh& cached_mesh(const std::string& folder, const std::string& name)
 {
   static std::map<std::string, Mesh> cache;
-  auto it = cache.find(name);
+  const std::string path = folder + "/" + name + ".off";
+  auto it = cache.find(path);
   if(it == cache.end())
-    it = cache.emplace(name, read_off(std::string(CGAL_EXT_CGAL_MESHES) + "/" + name + ".off")).first;
+    it = cache.emplace(path, read_off(path)).first;
   return it->second;
 }
 
+/// one of CGAL's data meshes (elephant, fandisk, ...)
+inline const Mesh& cgal_mesh(const std::string& name) { return cached_mesh(CGAL_EXT_CGAL_MESHES, name); }
+
 /// a mesh of the repository's data/ folder (elephant, mushroom)
-inline const Mesh& data_mesh(const std::string& name)
-{
-  static std::map<std::string, Mesh> cache;
-  auto it = cache.find(name);
-  if(it == cache.end())
-    it = cache.emplace(name, read_off(std::string(CGAL_EXT_DATA_DIR) + "/" + name + ".off")).first;
-  return it->second;
-}
+inline const Mesh& data_mesh(const std::string& name) { return cached_mesh(CGAL_EXT_DATA_DIR, name); }
 
 /// a mesh by name: the repository's data/ copy for elephant and mushroom, else CGAL's
 inline const Mesh& test_mesh(const std::string& name)
@@ -450,14 +449,15 @@ inline std::vector<Vertex> spread_vertices(const Mesh& m, int count, std::size_t
 // Solvers
 
 /// the solver's distances, in the order of vertices(g); a vertex the solver did not write is NaN
-template <class Graph, class Sources, class NamedParameters = CGAL_ext::parameters::Default_named_parameters_type>
+template <class ConcurrencyTag = CGAL::Sequential_tag, class Graph, class Sources,
+          class NamedParameters = CGAL_ext::parameters::Default_named_parameters_type>
 std::vector<double> solve(const Graph& g, const Sources& sources,
                           const NamedParameters& np = CGAL_ext::parameters::default_values())
 {
   auto map = get(CGAL::dynamic_vertex_property_t<double>(), g);
   for(auto v : vertices(g))
     put(map, v, std::numeric_limits<double>::quiet_NaN());
-  CGAL_ext::geodesic_distances(g, map, sources, np);
+  CGAL_ext::geodesic_distances<ConcurrencyTag>(g, map, sources, np);
   std::vector<double> out;
   for(auto v : vertices(g))
     out.push_back(get(map, v));
@@ -514,6 +514,7 @@ inline Vertex insert_on_edge(Mesh& m, Vertex a, Vertex b, const Point& p)
   return v;
 }
 
+#ifndef CGAL_EXT_TEST_NO_ORACLE
 /// CGAL::Surface_mesh_shortest_path's distances from vertex and face-location sources, by
 /// vertex index; its -1 (unreachable) becomes +infinity.
 ///
@@ -566,6 +567,8 @@ inline std::vector<double> oracle(const Mesh& m, const std::vector<Vertex>& vert
   }
   return d;
 }
+
+#endif // CGAL_EXT_TEST_NO_ORACLE
 
 /// An upper bound of the geodesic distance from `source`: Dijkstra over the vertices and
 /// `per_edge` evenly spaced points on every edge, joined by straight segments across each face

@@ -13,6 +13,11 @@
 
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/boost/graph/properties.h>
+#include <CGAL/tags.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/task_arena.h>
+#endif
 
 #include <array>
 #include <chrono>
@@ -82,12 +87,19 @@ std::vector<Source_point> to_source_points(const TriangleMesh& tm, VIM vim, FIM 
 
 /// \ingroup PkgGeodesics3Ref
 /// computes the geodesic distance from the nearest of `sources` to every vertex of `tm` and
-/// writes it to `vertex_distance_map`. The default algorithm is exact: distances are those of
-/// the shortest paths on the polyhedral surface.
+/// writes it to `vertex_distance_map`. By default distances are exact: those of the shortest
+/// paths on the polyhedral surface. With `approximation(lambda)` they are approximate from above
+/// (AVTP), the faster the smaller `lambda`.
+///
+/// With `CGAL::Parallel_tag` the window lists are propagated on TBB threads (PVTP, or PAVTP
+/// with `approximation`); the distances are the same for every number of threads.
+/// `CGAL::Parallel_if_available_tag` is parallel when TBB is linked and sequential otherwise.
 ///
 /// Vertices that no source reaches (another connected component), and vertices beyond the
 /// `max_distance` or beyond the farthest `stop_vertices`, get `+infinity`.
 ///
+/// \tparam ConcurrencyTag `CGAL::Sequential_tag` (the default), `CGAL::Parallel_tag` or
+///         `CGAL::Parallel_if_available_tag`
 /// \tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`
 /// \tparam VertexDistanceMap a model of `WritablePropertyMap` with
 ///         `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key and `double` as value
@@ -106,6 +118,26 @@ std::vector<Source_point> to_source_points(const TriangleMesh& tm, VIM vim, FIM 
 ///     \cgalParamDescription{the solver}
 ///     \cgalParamType{`CGAL_ext::Geodesic_algorithm`}
 ///     \cgalParamDefault{`CGAL_ext::VTP`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{approximation}
+///     \cgalParamDescription{`lambda`: every time the wavefront passes a multiple of `lambda` times the mean
+///                           edge length its windows are dropped and its vertices become sources (AVTP);
+///                           a small `lambda` is fast and coarse (towards Dijkstra over the edges), a large one
+///                           exact}
+///     \cgalParamType{`double`, positive}
+///     \cgalParamDefault{none: exact distances}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{number_of_threads}
+///     \cgalParamDescription{with `CGAL::Parallel_tag`: the number of threads (in a `tbb::task_arena`), `0` for
+///                           as many as TBB chooses}
+///     \cgalParamType{`int`, non-negative}
+///     \cgalParamDefault{`0`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{batch_size}
+///     \cgalParamDescription{with `CGAL::Parallel_tag`: vertices are taken until this many window lists are
+///                           scheduled, and the scheduled lists are propagated together}
+///     \cgalParamType{`std::size_t`, positive}
+///     \cgalParamDefault{`512`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{max_distance}
 ///     \cgalParamDescription{the propagation stops beyond this distance; farther vertices get `+infinity`}
@@ -142,12 +174,18 @@ std::vector<Source_point> to_source_points(const TriangleMesh& tm, VIM vim, FIM 
 /// \throws Geodesic_error when `tm` is empty, not a manifold triangle mesh, has a non-finite
 ///         coordinate or a degenerate triangle, when a source or stop vertex is out of range,
 ///         when barycentric coordinates are not a convex combination, or when `max_distance` is
-///         negative.
-template <class TriangleMesh, class VertexDistanceMap, class Sources,
-          class NamedParameters = parameters::Default_named_parameters_type>
+///         negative, `approximation` not positive, `number_of_threads` negative or `batch_size` zero.
+template <class ConcurrencyTag = CGAL::Sequential_tag, class TriangleMesh, class VertexDistanceMap,
+          class Sources, class NamedParameters = parameters::Default_named_parameters_type>
 void geodesic_distances(const TriangleMesh& tm, VertexDistanceMap vertex_distance_map,
                         const Sources& sources, const NamedParameters& np = parameters::default_values())
 {
+#ifndef CGAL_LINKED_WITH_TBB
+  static_assert(!std::is_same<ConcurrencyTag, CGAL::Parallel_tag>::value,
+                "CGAL_ext::geodesic_distances: CGAL::Parallel_tag needs TBB (CGAL_LINKED_WITH_TBB); "
+                "use CGAL::Sequential_tag or CGAL::Parallel_if_available_tag");
+#endif
+  constexpr bool parallel = std::is_same<ConcurrencyTag, CGAL::Parallel_tag>::value;
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
@@ -169,13 +207,37 @@ void geodesic_distances(const TriangleMesh& tm, VertexDistanceMap vertex_distanc
     solver.add_source(s);
   solver.set_max_distance(choose_parameter(get_parameter(np, internal_np::max_distance),
                                            Geodesics_3::internal::VTP_solver::infinity()));
+  if constexpr(!std::is_same<decltype(get_parameter(np, internal_np::approximation)),
+                             CGAL::internal_np::Param_not_found>::value)
+    solver.set_approximation(double(get_parameter(np, internal_np::approximation)));
+  const long threads = static_cast<long>(choose_parameter(get_parameter(np, internal_np::number_of_threads), 0));
+  if(threads < 0)
+    throw Geodesic_error("number of threads must be non-negative, got " + std::to_string(threads));
+  if constexpr(parallel) {
+    solver.set_parallel(static_cast<std::size_t>(
+      choose_parameter(get_parameter(np, internal_np::batch_size),
+                       Geodesics_3::internal::VTP_solver::default_batch_size)));
+  }
   if constexpr(!std::is_same<decltype(get_parameter(np, internal_np::stop_vertices)),
                              CGAL::internal_np::Param_not_found>::value) {
     for(vertex_descriptor v : get_parameter(np, internal_np::stop_vertices))
       solver.add_stop_vertex(static_cast<int>(get(vim, v)));
   }
   const double seconds_setup = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  solver.run();
+#ifdef CGAL_LINKED_WITH_TBB
+  if constexpr(parallel) {
+    // The arena bounds the threads of this call only (never a process-wide setting).
+    tbb::task_arena arena(threads > 0 ? int(threads) : tbb::task_arena::automatic);
+    Geodesics_3::internal::sanitizer_release(&solver);
+    arena.execute([&] {
+      Geodesics_3::internal::sanitizer_acquire(&solver);
+      solver.run();
+      Geodesics_3::internal::sanitizer_release(&solver);
+    });
+    Geodesics_3::internal::sanitizer_acquire(&solver);
+  } else
+#endif
+    solver.run();
 
   const std::vector<double>& d = solver.distances();
   for(vertex_descriptor v : vertices(tm))

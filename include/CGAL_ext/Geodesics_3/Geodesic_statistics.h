@@ -17,8 +17,12 @@ struct Geodesic_statistics
   std::size_t peak_window_bytes = 0; ///< memory held by the window pool at its peak
   std::size_t vertices_popped = 0;   ///< vertices taken from the priority queue (with repeats)
   std::size_t lists_propagated = 0;  ///< window lists propagated across a triangle
+  std::size_t wavefront_resets = 0;  ///< approximation only: times the wavefront was reset
   double seconds_setup = 0;          ///< building the mesh cache and checking the input
   double seconds_solve = 0;          ///< the propagation alone
+  double seconds_selection = 0;      ///< parallel or approximate: taking vertices, resetting the wavefront
+  double seconds_propagation = 0;    ///< parallel only: the parallel propagation of window lists
+  double seconds_merge = 0;          ///< parallel only: distance updates and list merges
 };
 
 } // namespace CGAL_ext

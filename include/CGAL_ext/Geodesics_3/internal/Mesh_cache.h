@@ -55,6 +55,7 @@ struct Mesh_cache
   std::vector<std::uint8_t> is_border_vertex;  // per vertex
   std::vector<std::uint8_t> is_pseudo_source;  // per vertex: saddle or border vertex
   double mean_edge_length = 0;
+  double mean_anisotropy = 1; // mean over faces of p H / (2 sqrt(3) S); 1 for equilateral
   double bbox_diagonal = 0;
 
   static int next(int h) { return h % 3 == 2 ? h - 2 : h + 1; }
@@ -94,6 +95,7 @@ inline void Mesh_cache::finish()
   corner_angle.resize(nh);
   double length_sum = 0;
   std::size_t edge_count = 0;
+  double anisotropy_sum = 0;
   for(std::size_t f = 0; f < number_of_faces; ++f) {
     const std::array<double, 3>* p[3];
     for(int k = 0; k < 3; ++k)
@@ -129,8 +131,12 @@ inline void Mesh_cache::finish()
         ++edge_count;
       }
     }
+    const double a = frame[3 * f].length, b = frame[3 * f + 1].length, c = frame[3 * f + 2].length;
+    const double area = 0.5 * a * frame[3 * f].apex_y;
+    anisotropy_sum += 0.5 * (a + b + c) * std::max({a, b, c}) / (2 * std::sqrt(3.) * area);
   }
   mean_edge_length = edge_count ? length_sum / double(edge_count) : 0.;
+  mean_anisotropy = number_of_faces ? anisotropy_sum / double(number_of_faces) : 1.;
 
   // One outgoing half-edge per vertex, a border one when there is one, so that turning around
   // the vertex from it meets every face of its umbrella.

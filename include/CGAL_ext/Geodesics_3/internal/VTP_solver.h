@@ -5,7 +5,15 @@
 #include <CGAL_ext/Geodesics_3/Geodesic_error.h>
 #include <CGAL_ext/Geodesics_3/Geodesic_statistics.h>
 #include <CGAL_ext/Geodesics_3/internal/Mesh_cache.h>
+#include <CGAL_ext/Geodesics_3/internal/Thread_sanitizer.h>
+#include <CGAL_ext/Geodesics_3/internal/Vertex_queue.h>
 #include <CGAL_ext/Geodesics_3/internal/Window.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/partitioner.h>
+#endif
 
 #include <algorithm>
 #include <array>
@@ -14,7 +22,6 @@
 #include <cstdint>
 #include <functional>
 #include <limits>
-#include <queue>
 #include <sstream>
 #include <utility>
 #include <vector>
@@ -72,22 +79,42 @@ inline Source_point normalized_source(const Mesh_cache& m, Source_point s)
   return s;
 }
 
-/// Exact single- or multi-source geodesic distances by vertex-oriented triangle propagation
-/// (VTP, thesis chapter 4.1), sequential.
+/// One window list taken across its triangle: the work of one task of the propagation step.
+/// `propagate()` fills it reading only shared state that no task writes; `merge()` applies it.
+struct List_task
+{
+  int halfedge = -1;
+  std::int32_t chain = -1;  // the list's windows, detached from it
+  double apex_distance = 0; // shortest path to the apex found through the list
+  std::vector<Window> windows;
+  std::vector<Window> to_ac, to_cb; // children for the lists across A->C and C->B
+};
+
+/// Geodesic distances from any number of sources by vertex-oriented triangle propagation
+/// (VTP, thesis chapter 4): exact, or approximate with `set_approximation(lambda)` (AVTP);
+/// sequential, or parallel with `set_parallel()` (PVTP / PAVTP, with TBB).
 ///
 /// Windows are kept only on the wavefront, grouped in lists per half-edge: the list of
 /// half-edge h holds windows on the edge of h that will enter the face of h. Vertices are taken
-/// in order of tentative distance; taking a vertex sweeps its one-ring, i.e. propagates every
-/// list on its incident edges, and the children are propagated on at once while their edge has
-/// a vertex already taken. Saddle and border vertices are pseudo-sources: each time their
-/// distance drops after being taken, they emit new windows.
+/// in order of tentative distance; taking a vertex schedules every list on its incident edges,
+/// and the children of a list are scheduled at once while their edge has a taken vertex.
+/// Saddle and border vertices are pseudo-sources: each time their distance drops after being
+/// taken, they emit new windows.
 ///
-/// Pruning (each provably drops only paths that another path matches or beats):
-/// - the filter of Xin and Wang against the two end vertices of the edge;
-/// - "one angle, two sides": the window giving the shortest path to the apex C splits the edge
-///   at the point sp where that path crosses it; rays of any window left of sp that would land
-///   on the far side CB cross that path, and are no shorter where they cross, so they are
-///   dropped (and symmetrically right of sp).
+/// A scheduled list is propagated in two steps: `propagate()` reads the list, the mesh and the
+/// vertex distances and writes only its own `List_task` (children, apex distance);
+/// `merge()` then updates the apex and appends the children to their lists. Sequentially
+/// (VTP) each list is merged right after it is propagated; in parallel (PVTP) all the
+/// scheduled lists are propagated at once, one task each, and merged afterwards in schedule
+/// order, so that the result does not depend on the number of threads.
+///
+/// Pruning, each rule provably dropping only rays that another path matches or beats:
+/// - trimming by the end vertices of the edge (an exact form of the filter of Xin and Wang);
+/// - clipping the windows of a list against each other (Rule 2);
+/// - "one angle, two sides" (Rule 1): the window giving the shortest path to the apex C splits
+///   the edge at the point sp where that path crosses it; rays left of sp that would land on the
+///   far side CB cross that path and are no shorter there, so they are dropped, and
+///   symmetrically right of sp.
 class VTP_solver
 {
 public:
@@ -96,17 +123,25 @@ public:
     , m_distance(mesh.number_of_vertices, infinity())
     , m_emitted(mesh.number_of_vertices, infinity())
     , m_taken(mesh.number_of_vertices, 0)
-    , m_is_source_vertex(mesh.number_of_vertices, 0)
+    , m_emits(mesh.number_of_vertices, 0)
     , m_is_stop(mesh.number_of_vertices, 0)
     , m_head(mesh.number_of_halfedges(), -1)
     , m_tail(mesh.number_of_halfedges(), -1)
     , m_queued(mesh.number_of_halfedges(), 0)
     , m_pending(mesh.number_of_halfedges(), 0)
+    , m_buckets(mesh.mean_edge_length / std::max(1., mesh.mean_anisotropy))
   {
     m_min_window_length = 1e-10 * mesh.mean_edge_length;
+    for(std::size_t v = 0; v < mesh.number_of_vertices; ++v)
+      m_emits[v] = mesh.is_pseudo_source[v];
   }
 
   static double infinity() { return std::numeric_limits<double>::infinity(); }
+
+  /// The number of window lists propagated together by default in parallel.
+  static constexpr std::size_t default_batch_size = 512;
+  /// The guard band of the approximation, in mean edge lengths (thesis 4.3.2, lambda_g).
+  static constexpr double approximation_guard = 8.;
 
   void add_source(const Source_point& s) { m_sources.push_back(normalized_source(m_mesh, s)); }
 
@@ -128,6 +163,34 @@ public:
     }
   }
 
+  /// AVTP: every time the wavefront passes a multiple of lambda times the mean edge length, its
+  /// windows are dropped and its vertices become sources carrying their distances.
+  void set_approximation(double lambda)
+  {
+    if(!(lambda > 0) || !std::isfinite(lambda))
+      throw Geodesic_error("approximation lambda must be positive and finite, got " + std::to_string(lambda));
+    m_reset_step = lambda * m_mesh.mean_edge_length;
+    // What a reset keeps depends on the order in which lists were propagated: the approximation
+    // always takes vertices in batches from buckets, so that run sequentially or on any number
+    // of threads it gives the same distances.
+    m_batched = true;
+  }
+
+  /// PVTP: vertices are taken from buckets until `batch_size` lists are scheduled, and the
+  /// scheduled lists are propagated in parallel. The caller runs `run()` inside the
+  /// `tbb::task_arena` that bounds the number of threads.
+  void set_parallel(std::size_t batch_size)
+  {
+    if(batch_size == 0)
+      throw Geodesic_error("batch size must be positive");
+#ifndef CGAL_LINKED_WITH_TBB
+    throw Geodesic_error("parallel propagation needs TBB (CGAL_LINKED_WITH_TBB is not defined)");
+#endif
+    m_parallel = true;
+    m_batched = true;
+    m_batch_size = batch_size;
+  }
+
   /// Runs the propagation; distances beyond the max distance, or beyond the farthest stop
   /// vertex when stop vertices are given, are +infinity.
   void run()
@@ -137,28 +200,20 @@ public:
       throw Geodesic_error("no source was given");
     for(const Source_point& s : m_sources) {
       if(s.vertex >= 0) {
-        m_is_source_vertex[s.vertex] = 1;
+        m_emits[s.vertex] = 1;
         relax(s.vertex, 0.);
       } else {
         emit_from_face_point(s);
       }
     }
-    for(;;) {
-      while(!m_queue.empty()) {
-        const auto top = m_queue.top();
-        if(top.first > m_distance[top.second]) { // stale entry
-          m_queue.pop();
-          continue;
-        }
-        if(top.first > limit())
-          break;
-        m_queue.pop();
-        take_vertex(top.second);
-        drain();
-      }
-      if(!flush_pending())
-        break;
-    }
+    m_next_reset = m_reset_step;
+    do {
+      if(m_batched)
+        take_vertices_in_batches();
+      else
+        take_vertices_one_by_one();
+    } while(flush_pending());
+
     update_stop_limit();
     const double l = limit();
     if(l < infinity())
@@ -169,15 +224,17 @@ public:
     m_statistics.faces = m_mesh.number_of_faces;
     m_statistics.peak_windows = m_pool.peak();
     m_statistics.peak_window_bytes = m_pool.capacity_bytes();
-    m_statistics.seconds_solve =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    m_statistics.seconds_solve = seconds_since(start);
   }
 
   const std::vector<double>& distances() const { return m_distance; }
   const Geodesic_statistics& statistics() const { return m_statistics; }
 
 private:
-  typedef std::pair<double, int> Queue_entry;
+  static double seconds_since(std::chrono::steady_clock::time_point t)
+  {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+  }
 
   // The distance up to which results are wanted.
   double limit() const { return std::min(m_max_distance, m_stop_limit); }
@@ -195,21 +252,81 @@ private:
     m_stop_limit = farthest;
   }
 
-  bool emits_windows(int v) const { return m_mesh.is_pseudo_source[v] || m_is_source_vertex[v]; }
-
   void relax(int v, double d)
   {
     if(d < m_distance[v]) {
       m_distance[v] = d;
-      if(!m_taken[v] || emits_windows(v))
-        m_queue.push(Queue_entry(d, v));
+      if(!m_taken[v] || m_emits[v]) {
+        if(m_batched)
+          m_buckets.push(d, v);
+        else
+          m_heap.push(d, v);
+      }
     }
   }
 
-  bool inside_swept_region(int h) const
+  // Sequential VTP: the nearest vertex is taken, and everything it schedules is propagated
+  // before the next one.
+  void take_vertices_one_by_one()
   {
-    return m_taken[m_mesh.source(h)] || m_taken[m_mesh.target(h)];
+    while(!m_heap.empty()) {
+      const Vertex_entry top = m_heap.top();
+      if(top.first > m_distance[top.second]) { // stale
+        m_heap.pop();
+        continue;
+      }
+      if(top.first > limit())
+        return;
+      m_heap.pop();
+      reset_wavefront_before(top.first);
+      take_vertex(top.second);
+      drain();
+    }
   }
+
+  // PVTP: vertices are taken from the lowest buckets until enough lists are scheduled, then
+  // the lists are propagated in parallel batches until none is left. Vertices beyond the limit,
+  // or beyond the next reset radius of the approximation, wait: the reset happens, as in the
+  // sequential version, once every vertex before it is taken and every list drained.
+  void take_vertices_in_batches()
+  {
+    std::vector<Vertex_entry>& bucket = m_bucket_entries;
+    for(;;) {
+      const auto start = std::chrono::steady_clock::now();
+      const double barrier = m_reset_step > 0 ? std::min(limit(), m_next_reset) : limit();
+      bool took_any = false;
+      double lowest_waiting = infinity();
+      // One bucket a round at most: its vertices lie in a band about one edge wide, close enough
+      // to the true order that taking them together costs few extra windows.
+      for(bool first = true; first && m_fifo.size() < m_batch_size && lowest_waiting == infinity(); first = false) {
+        m_buckets.pop_lowest(bucket);
+        if(bucket.empty())
+          break;
+        for(const Vertex_entry& e : bucket) {
+          if(e.first > m_distance[e.second])
+            continue; // stale
+          if(e.first > barrier || m_fifo.size() >= m_batch_size) {
+            m_buckets.push(e.first, e.second);
+            if(e.first > barrier)
+              lowest_waiting = std::min(lowest_waiting, e.first);
+            continue;
+          }
+          take_vertex(e.second);
+          took_any = true;
+        }
+      }
+      m_statistics.seconds_selection += seconds_since(start);
+      if(took_any) {
+        drain();
+        continue;
+      }
+      if(lowest_waiting == infinity() || lowest_waiting > limit())
+        return;
+      reset_wavefront_before(lowest_waiting);
+    }
+  }
+
+  bool inside_swept_region(int h) const { return m_taken[m_mesh.source(h)] || m_taken[m_mesh.target(h)]; }
 
   void schedule(int h)
   {
@@ -219,15 +336,10 @@ private:
     }
   }
 
-  // Appends a window to the list of half-edge h (if it survives the end-vertex filter) and
-  // schedules the list when it lies in the swept region.
-  void insert_window(int h, Window w)
+  // Appends a window to the list of half-edge h and schedules the list when it lies in the
+  // swept region. The window was already trimmed by the caller.
+  void append_window(int h, const Window& w)
   {
-    const double length = m_mesh.frame[h].length;
-    double key;
-    if(!trim_by_edge_vertices(w, length, m_distance[m_mesh.source(h)], m_distance[m_mesh.target(h)], key) ||
-       key > m_limit_cache)
-      return;
     const std::int32_t i = m_pool.allocate(w);
     m_pool[i].next = -1;
     if(m_tail[h] >= 0)
@@ -242,6 +354,20 @@ private:
       m_pending[h] = 1;
       m_pending_lists.push_back(h);
     }
+  }
+
+  // Trims a window by the end vertices of the edge of h (and the limit): false if nothing is
+  // left. `d_from` and `d_to` are the distances to use for the source and target of h.
+  bool keep_window(Window& w, int h, double d_from, double d_to) const
+  {
+    double key;
+    return trim_by_edge_vertices(w, m_mesh.frame[h].length, d_from, d_to, key) && key <= m_limit_cache;
+  }
+
+  void insert_window(int h, Window w)
+  {
+    if(keep_window(w, h, m_distance[m_mesh.source(h)], m_distance[m_mesh.target(h)]))
+      append_window(h, w);
   }
 
   // A pseudo-source at vertex v: whole-edge windows on the edges opposite v, and its
@@ -285,7 +411,7 @@ private:
       if(o < 0)
         continue;
       std::array<double, 3> bo{{0., 0., 0.}};
-      bo[o % 3] = b[(k + 1) % 3];                    // o starts where h ends
+      bo[o % 3] = b[(k + 1) % 3]; // o starts where h ends
       bo[Mesh_cache::next(o) % 3] = b[k];
       emit_in_face(Mesh_cache::face(o), bo);
     }
@@ -299,8 +425,7 @@ private:
       // The point in the frame of h: corner k at 0, corner k+1 at (length, 0), corner k+2 at the apex.
       const double x = b[(k + 1) % 3] * f.length + b[(k + 2) % 3] * f.apex_x;
       const double y = b[(k + 2) % 3] * f.apex_y;
-      // distance to corner k (the origin of this frame)
-      relax(m_mesh.source(h), std::hypot(x, y));
+      relax(m_mesh.source(h), norm2d(x, y)); // distance to corner k, the origin of this frame
       if(b[(k + 2) % 3] <= 0)
         continue; // the point lies on this edge
       const int g = m_mesh.opposite(h);
@@ -324,7 +449,7 @@ private:
       if(m_is_stop[v] && ++m_stops_taken == m_stop_vertices.size())
         update_stop_limit();
     }
-    if(emits_windows(v) && m_distance[v] < m_emitted[v])
+    if(m_emits[v] && m_distance[v] < m_emitted[v])
       emit_from_vertex(v);
     m_mesh.for_each_outgoing(v, [&](int h) {
       const int in = Mesh_cache::prev(h);
@@ -337,16 +462,103 @@ private:
     });
   }
 
+  // AVTP (thesis Algorithm 5): before a vertex beyond the next reset radius r is taken, the
+  // windows of the wavefront within the guard band r + lambda_g h are dropped, and the queued
+  // vertices within the band become sources carrying their tentative distance.
+  void reset_wavefront_before(double d)
+  {
+    if(m_reset_step <= 0 || d <= m_next_reset)
+      return;
+    const auto start = std::chrono::steady_clock::now();
+    // When several radii are passed at once, one reset at the last of them does.
+    const double r = std::max(m_next_reset, std::floor(d / m_reset_step) * m_reset_step);
+    const double guard = r + approximation_guard * m_mesh.mean_edge_length;
+    auto mark = [&](const Vertex_entry& e) {
+      if(!m_taken[e.second] && m_distance[e.second] <= guard)
+        m_emits[e.second] = 1;
+    };
+    if(m_batched)
+      m_buckets.for_each(mark);
+    else
+      m_heap.for_each(mark);
+    // Windows wait only on lists outside the swept region; a list goes when both its end
+    // vertices are within the band.
+    for(int h : m_pending_lists)
+      if(m_distance[m_mesh.source(h)] <= guard && m_distance[m_mesh.target(h)] <= guard)
+        clear_list(h);
+    m_next_reset = r + m_reset_step;
+    ++m_statistics.wavefront_resets;
+    m_statistics.seconds_selection += seconds_since(start);
+  }
+
+  void clear_list(int h)
+  {
+    for(std::int32_t i = m_head[h]; i >= 0;) {
+      const std::int32_t next = m_pool[i].next;
+      m_pool.release(i);
+      i = next;
+    }
+    m_head[h] = m_tail[h] = -1;
+  }
+
+  // Propagates the scheduled lists, and the lists they schedule, until none is left.
   void drain()
   {
     m_limit_cache = limit();
-    for(std::size_t i = 0; i < m_fifo.size(); ++i)
-      propagate_list(m_fifo[i]);
-    m_fifo.clear();
+    if(!m_batched) {
+      List_task& task = m_task_one;
+      for(std::size_t i = 0; i < m_fifo.size(); ++i) {
+        detach(m_fifo[i], task);
+        propagate(task);
+        merge(task);
+      }
+      m_fifo.clear();
+      return;
+    }
+    while(!m_fifo.empty()) {
+      const std::size_t n = m_fifo.size();
+      if(m_tasks.size() < n)
+        m_tasks.resize(n);
+      for(std::size_t i = 0; i < n; ++i)
+        detach(m_fifo[i], m_tasks[i]);
+      m_fifo.clear();
+      auto start = std::chrono::steady_clock::now();
+      propagate_tasks(n);
+      m_statistics.seconds_propagation += seconds_since(start);
+      start = std::chrono::steady_clock::now();
+      for(std::size_t i = 0; i < n; ++i)
+        merge(m_tasks[i]);
+      m_statistics.seconds_merge += seconds_since(start);
+    }
+  }
+
+  void propagate_tasks(std::size_t n)
+  {
+#ifdef CGAL_LINKED_WITH_TBB
+    if(m_parallel) {
+      // Each task reads shared state that no task writes, and writes only itself. Chunks of a
+      // fixed size (simple_partitioner): lists are small, uniform units of work.
+      sanitizer_release(&m_handoff);
+      tbb::parallel_for(
+        tbb::blocked_range<std::size_t>(0, n, 8),
+        [this](const tbb::blocked_range<std::size_t>& r) {
+          sanitizer_acquire(&m_handoff);
+          for(std::size_t i = r.begin(); i != r.end(); ++i)
+            propagate(m_tasks[i]);
+          sanitizer_release(&m_handback);
+        },
+        tbb::simple_partitioner());
+      sanitizer_acquire(&m_handback);
+      return;
+    }
+#endif
+    for(std::size_t i = 0; i < n; ++i)
+      propagate(m_tasks[i]);
   }
 
   // Propagates every list that still holds windows, whether or not its edge was swept; used
   // once no vertex within the limit is left, so that every path shorter than the limit is done.
+  // Returns whether anything was propagated (vertices may then need to be taken again).
   bool flush_pending()
   {
     update_stop_limit();
@@ -362,37 +574,39 @@ private:
     return any;
   }
 
-  // Takes the windows of list h across the face of h.
-  void propagate_list(int h)
+  void detach(int h, List_task& task)
   {
     m_queued[h] = 0;
-    m_scratch.clear();
-    for(std::int32_t i = m_head[h]; i >= 0;) {
-      const std::int32_t next = m_pool[i].next;
-      m_scratch.push_back(m_pool[i]);
-      m_pool.release(i);
-      i = next;
-    }
+    task.halfedge = h;
+    task.chain = m_head[h];
     m_head[h] = m_tail[h] = -1;
-    ++m_statistics.lists_propagated;
+  }
 
+  // Takes the windows of the task's list across the face of its half-edge. Reads the mesh, the
+  // window pool and the vertex distances; writes only `task`.
+  void propagate(List_task& task) const
+  {
+    const int h = task.halfedge;
+    std::vector<Window>& windows = task.windows;
+    task.to_ac.clear();
+    task.to_cb.clear();
+    task.apex_distance = infinity();
+    windows.clear();
     const Halfedge_frame& f = m_mesh.frame[h];
     const double d_from = m_distance[m_mesh.source(h)];
     const double d_to = m_distance[m_mesh.target(h)];
-    std::size_t n = 0;
-    for(Window w : m_scratch) {
-      double key;
-      if(trim_by_edge_vertices(w, f.length, d_from, d_to, key) && key <= m_limit_cache)
-        m_scratch[n++] = w;
+    for(std::int32_t i = task.chain; i >= 0; i = m_pool[i].next) {
+      Window w = m_pool[i];
+      if(keep_window(w, h, d_from, d_to))
+        windows.push_back(w);
     }
-    m_scratch.resize(n);
-    if(n == 0)
+    if(windows.empty())
       return;
-    prune_pairs();
+    prune_pairs(windows);
 
     // "One angle, two sides": the window with the shortest path to the apex splits the edge.
     double best = infinity(), split = 0;
-    for(const Window& w : m_scratch) {
+    for(const Window& w : windows) {
       double p;
       const double d = distance_to_apex(w, apex_crossing(w, f.apex_x, f.apex_y), f.apex_x, f.apex_y, p);
       if(d < best) {
@@ -400,40 +614,67 @@ private:
         split = p;
       }
     }
-    relax(m_mesh.apex(h), best);
+    task.apex_distance = best;
 
     const int g_ac = m_mesh.opposite(Mesh_cache::prev(h));
     const int g_cb = m_mesh.opposite(Mesh_cache::next(h));
+    const double d_apex = std::min(m_distance[m_mesh.apex(h)], best);
     Child_edge to_ac, to_cb;
     child_edges(m_mesh, h, to_ac, to_cb);
     Window child;
-    for(const Window& w : m_scratch) {
+    for(const Window& w : windows) {
       const double crossing = apex_crossing(w, f.apex_x, f.apex_y);
       if(g_ac >= 0) {
         const double hi = std::min({w.b1, split, crossing});
-        if(hi > w.b0 && make_child(w, w.b0, hi, to_ac, m_min_window_length, child))
-          insert_window(g_ac, child);
+        if(hi > w.b0 && make_child(w, w.b0, hi, to_ac, m_min_window_length, child) &&
+           keep_window(child, g_ac, d_from, d_apex)) // g_ac runs from A to C
+          task.to_ac.push_back(child);
       }
       if(g_cb >= 0) {
         const double lo = std::max({w.b0, split, crossing});
-        if(w.b1 > lo && make_child(w, lo, w.b1, to_cb, m_min_window_length, child))
-          insert_window(g_cb, child);
+        if(w.b1 > lo && make_child(w, lo, w.b1, to_cb, m_min_window_length, child) &&
+           keep_window(child, g_cb, d_apex, d_to)) // g_cb runs from C to B
+          task.to_cb.push_back(child);
       }
     }
   }
 
-  // Rule 2: windows of the list are clipped against each other where they overlap.
-  void prune_pairs()
+  // Applies a propagated task: frees its windows, updates the apex, appends the children.
+  void merge(List_task& task)
   {
-    if(m_scratch.size() < 2)
+    for(std::int32_t i = task.chain; i >= 0;) {
+      const std::int32_t next = m_pool[i].next;
+      m_pool.release(i);
+      i = next;
+    }
+    task.chain = -1;
+    ++m_statistics.lists_propagated;
+    const int h = task.halfedge;
+    if(task.apex_distance < infinity())
+      relax(m_mesh.apex(h), task.apex_distance);
+    if(!task.to_ac.empty()) {
+      const int g = m_mesh.opposite(Mesh_cache::prev(h));
+      for(const Window& w : task.to_ac)
+        append_window(g, w);
+    }
+    if(!task.to_cb.empty()) {
+      const int g = m_mesh.opposite(Mesh_cache::next(h));
+      for(const Window& w : task.to_cb)
+        append_window(g, w);
+    }
+  }
+
+  // Rule 2: windows of the list are clipped against each other where they overlap.
+  static void prune_pairs(std::vector<Window>& windows)
+  {
+    if(windows.size() < 2)
       return;
-    std::sort(m_scratch.begin(), m_scratch.end(),
-              [](const Window& a, const Window& b) { return a.b0 < b.b0; });
-    const std::size_t n = m_scratch.size();
+    std::sort(windows.begin(), windows.end(), [](const Window& a, const Window& b) { return a.b0 < b.b0; });
+    const std::size_t n = windows.size();
     for(std::size_t i = 0; i < n; ++i) {
-      Window& wi = m_scratch[i];
+      Window& wi = windows[i];
       for(std::size_t j = i + 1; j < n && wi.b1 > wi.b0; ++j) {
-        Window& wj = m_scratch[j];
+        Window& wj = windows[j];
         if(wj.b0 >= wi.b1)
           break; // sorted by where they start (skipping a pair only keeps more windows)
         if(!(wj.b1 > wj.b0))
@@ -445,23 +686,25 @@ private:
           wj.b1 = wj.b0;
       }
     }
-    m_scratch.erase(std::remove_if(m_scratch.begin(), m_scratch.end(),
-                                   [](const Window& w) { return !(w.b1 > w.b0); }),
-                    m_scratch.end());
+    windows.erase(std::remove_if(windows.begin(), windows.end(), [](const Window& w) { return !(w.b1 > w.b0); }),
+                  windows.end());
   }
 
   const Mesh_cache& m_mesh;
   std::vector<double> m_distance;
   std::vector<double> m_emitted; // sigma of the last windows a vertex emitted
   std::vector<std::uint8_t> m_taken;
-  std::vector<std::uint8_t> m_is_source_vertex;
+  std::vector<std::uint8_t> m_emits; // pseudo-source, source, or made a source by a reset
   std::vector<std::uint8_t> m_is_stop;
   std::vector<std::int32_t> m_head, m_tail;
   std::vector<std::uint8_t> m_queued, m_pending;
   std::vector<int> m_pending_lists;
   std::vector<int> m_fifo;
-  std::vector<Window> m_scratch;
-  std::priority_queue<Queue_entry, std::vector<Queue_entry>, std::greater<Queue_entry>> m_queue;
+  Vertex_heap m_heap;
+  Vertex_buckets m_buckets;
+  std::vector<Vertex_entry> m_bucket_entries;
+  List_task m_task_one;
+  std::vector<List_task> m_tasks;
   Window_pool m_pool;
   std::vector<Source_point> m_sources;
   std::vector<int> m_stop_vertices;
@@ -470,8 +713,14 @@ private:
   double m_stop_limit = infinity();
   double m_limit_cache = infinity();
   double m_min_window_length = 0;
+  double m_reset_step = 0; // lambda h, or 0 for exact propagation
+  double m_next_reset = 0;
   bool m_force = false;
+  bool m_parallel = false; // propagate batches on TBB threads
+  bool m_batched = false;  // take vertices from buckets, propagate lists in batches
+  std::size_t m_batch_size = default_batch_size;
   Geodesic_statistics m_statistics;
+  char m_handoff = 0, m_handback = 0; // tokens for ThreadSanitizer (Thread_sanitizer.h)
 };
 
 } // namespace internal

@@ -1,0 +1,99 @@
+// Copyright (c) 2026 The CGAL_ext geodesics developers.
+#ifndef CGAL_EXT_GEODESICS_3_INTERNAL_VERTEX_QUEUE_H
+#define CGAL_EXT_GEODESICS_3_INTERNAL_VERTEX_QUEUE_H
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <functional>
+#include <utility>
+#include <vector>
+
+namespace CGAL_ext {
+namespace Geodesics_3 {
+namespace internal {
+
+/// A vertex waiting with the tentative distance it had when it was queued. An entry whose
+/// distance is no longer the vertex's distance is stale and skipped (lazy deletion).
+typedef std::pair<double, int> Vertex_entry;
+
+/// Exact order: a binary min-heap (sequential VTP takes vertices one at a time).
+class Vertex_heap
+{
+public:
+  void push(double d, int v)
+  {
+    m_heap.emplace_back(d, v);
+    std::push_heap(m_heap.begin(), m_heap.end(), std::greater<Vertex_entry>());
+  }
+  bool empty() const { return m_heap.empty(); }
+  const Vertex_entry& top() const { return m_heap.front(); }
+  void pop()
+  {
+    std::pop_heap(m_heap.begin(), m_heap.end(), std::greater<Vertex_entry>());
+    m_heap.pop_back();
+  }
+  template <class Function>
+  void for_each(Function f) const
+  {
+    for(const Vertex_entry& e : m_heap)
+      f(e);
+  }
+
+private:
+  std::vector<Vertex_entry> m_heap;
+};
+
+/// Approximate order in O(1): bucket i holds the entries with distance in [i w, (i+1) w)
+/// (thesis 4.2.2, w = h / tau), in no particular order inside a bucket. The buckets grow on
+/// demand. Parallel VTP takes whole buckets at a time.
+class Vertex_buckets
+{
+public:
+  explicit Vertex_buckets(double width = 1.) : m_width(width) {}
+
+  void push(double d, int v)
+  {
+    // Far beyond any wavefront the order hardly matters; cap the number of buckets.
+    const double index = std::min(std::floor(d / m_width), double(max_buckets));
+    const std::size_t i = index > 0 ? std::size_t(index) : 0;
+    if(i >= m_buckets.size())
+      m_buckets.resize(i + 1);
+    m_buckets[i].emplace_back(d, v);
+    m_first = std::min(m_first, i);
+    ++m_size;
+  }
+  bool empty() const { return m_size == 0; }
+
+  /// Moves the entries of the lowest non-empty bucket to `out` (which is cleared first).
+  void pop_lowest(std::vector<Vertex_entry>& out)
+  {
+    out.clear();
+    while(m_first < m_buckets.size() && m_buckets[m_first].empty())
+      ++m_first;
+    if(m_first == m_buckets.size())
+      return;
+    out.swap(m_buckets[m_first]);
+    m_size -= out.size();
+  }
+  template <class Function>
+  void for_each(Function f) const
+  {
+    for(std::size_t i = m_first; i < m_buckets.size(); ++i)
+      for(const Vertex_entry& e : m_buckets[i])
+        f(e);
+  }
+
+private:
+  static constexpr std::size_t max_buckets = std::size_t(1) << 22;
+  double m_width;
+  std::vector<std::vector<Vertex_entry>> m_buckets;
+  std::size_t m_first = 0;
+  std::size_t m_size = 0;
+};
+
+} // namespace internal
+} // namespace Geodesics_3
+} // namespace CGAL_ext
+
+#endif // CGAL_EXT_GEODESICS_3_INTERNAL_VERTEX_QUEUE_H

@@ -1,0 +1,240 @@
+// Parallel (PVTP) and approximate (AVTP, PAVTP) propagation: the same distances for every
+// thread count and batch size, exactness of PVTP, the limits and bounds of the approximation.
+// This file is also built under ThreadSanitizer (test_parallel_tsan).
+#define CGAL_EXT_TEST_NO_ORACLE
+#include "test_support.h"
+
+namespace {
+
+using namespace test_support;
+
+using CGAL_ext::parameters::approximation;
+using CGAL_ext::parameters::batch_size;
+using CGAL_ext::parameters::number_of_threads;
+
+/// max |a - b| over vertices, +infinity where exactly one of them is infinite
+double max_difference(const std::vector<double>& a, const std::vector<double>& b)
+{
+  double worst = 0;
+  for(std::size_t i = 0; i < a.size(); ++i) {
+    if(std::isinf(a[i]) || std::isinf(b[i])) {
+      if(a[i] != b[i])
+        return inf;
+      continue;
+    }
+    worst = std::max(worst, std::abs(a[i] - b[i]));
+  }
+  return worst;
+}
+
+/// mean of (approx - exact) / exact over vertices farther than 1e-12 from the sources
+double mean_relative_error(const std::vector<double>& approx, const std::vector<double>& exact)
+{
+  double sum = 0;
+  std::size_t n = 0;
+  for(std::size_t i = 0; i < exact.size(); ++i)
+    if(exact[i] > 1e-12 && std::isfinite(exact[i])) {
+      sum += (approx[i] - exact[i]) / exact[i];
+      ++n;
+    }
+  return n ? sum / double(n) : 0.;
+}
+
+struct Source_set
+{
+  std::string name;
+  std::vector<Vertex> vertices;
+  std::vector<Face_location> faces;
+};
+
+std::vector<Source_set> source_sets(const Mesh& m)
+{
+  const std::size_t n = m.number_of_vertices();
+  return {{"vertex0", {Vertex(0)}, {}},
+          {"three_vertices", {Vertex(0), Vertex(n / 3), Vertex(2 * n / 3)}, {}},
+          {"face_points", {}, {location(7, 0.2, 0.3), location(m.number_of_faces() / 2, 0.6, 0.1)}}};
+}
+
+template <class ConcurrencyTag = CGAL::Sequential_tag, class NamedParameters = CGAL_ext::parameters::Default_named_parameters_type>
+std::vector<double> solve_set(const Mesh& m, const Source_set& s,
+                              const NamedParameters& np = CGAL_ext::parameters::default_values())
+{
+  if(s.faces.empty())
+    return solve<ConcurrencyTag>(m, s.vertices, np);
+  return solve<ConcurrencyTag>(m, s.faces, np);
+}
+
+class Parallel_on_mesh : public ::testing::TestWithParam<std::string>
+{};
+
+// PVTP is exact: it matches sequential VTP to round-off, and gives bit-identical distances for
+// every thread count (tasks write only their own slot, merged in a fixed order).
+TEST_P(Parallel_on_mesh, pvtp_matches_vtp_for_every_thread_count_and_batch_size)
+{
+  const Mesh& m = test_mesh(GetParam());
+  const double tolerance = 1e-12 * bbox_diagonal(m);
+  for(const Source_set& s : source_sets(m)) {
+    const std::vector<double> exact = solve_set(m, s);
+    for(std::size_t k : {std::size_t(1), std::size_t(16), std::size_t(512)}) {
+      const std::vector<double> one = solve_set<CGAL::Parallel_tag>(m, s, number_of_threads(1).batch_size(k));
+      EXPECT_LE(max_difference(one, exact), tolerance) << s.name << ", batch " << k;
+      for(int threads : {2, 4}) {
+        const std::vector<double> many =
+          solve_set<CGAL::Parallel_tag>(m, s, number_of_threads(threads).batch_size(k));
+        EXPECT_EQ(max_difference(many, one), 0.) << s.name << ", batch " << k << ", " << threads << " threads";
+      }
+    }
+  }
+}
+
+TEST_P(Parallel_on_mesh, parallel_max_distance_and_stop_vertices_match_sequential)
+{
+  const Mesh& m = test_mesh(GetParam());
+  const double tolerance = 1e-12 * bbox_diagonal(m);
+  const std::vector<Vertex> source = {Vertex(0)};
+  const std::vector<double> full = solve(m, source);
+  double farthest = 0;
+  for(double d : full)
+    if(std::isfinite(d))
+      farthest = std::max(farthest, d);
+  const double radius = 0.4 * farthest;
+  for(int threads : {1, 2, 4}) {
+    const std::vector<double> limited =
+      solve<CGAL::Parallel_tag>(m, source, number_of_threads(threads).max_distance(radius));
+    for(std::size_t i = 0; i < full.size(); ++i) {
+      if(full[i] <= radius)
+        EXPECT_NEAR(limited[i], full[i], tolerance) << "vertex " << i;
+      else
+        EXPECT_TRUE(std::isinf(limited[i])) << "vertex " << i << " at " << full[i] << " beyond " << radius;
+    }
+    const std::vector<Vertex> stops = {Vertex(m.number_of_vertices() / 2), Vertex(m.number_of_vertices() - 1)};
+    const std::vector<double> stopped =
+      solve<CGAL::Parallel_tag>(m, source, number_of_threads(threads).stop_vertices(stops));
+    for(Vertex v : stops)
+      EXPECT_NEAR(stopped[v.idx()], full[v.idx()], tolerance) << "stop vertex " << v;
+    for(std::size_t i = 0; i < full.size(); ++i)
+      if(std::isfinite(stopped[i]))
+        EXPECT_NEAR(stopped[i], full[i], tolerance) << "vertex " << i;
+  }
+}
+
+// A lambda larger than any distance never resets the wavefront: the result is exact.
+TEST_P(Parallel_on_mesh, approximation_with_a_huge_lambda_is_exact)
+{
+  const Mesh& m = test_mesh(GetParam());
+  const double tolerance = 1e-12 * bbox_diagonal(m);
+  for(const Source_set& s : source_sets(m)) {
+    const std::vector<double> exact = solve_set(m, s);
+    CGAL_ext::Geodesic_statistics stats;
+    const std::vector<double> approx = solve_set(m, s, approximation(1e12).statistics(stats));
+    EXPECT_LE(max_difference(approx, exact), tolerance) << s.name;
+    EXPECT_EQ(stats.wavefront_resets, 0u);
+  }
+}
+
+// lambda -> 0 resets at every vertex: every vertex becomes a source relaxing its neighbours, so
+// the result lies between the exact distance and Dijkstra's over the edges.
+TEST_P(Parallel_on_mesh, approximation_with_a_tiny_lambda_lies_between_exact_and_dijkstra)
+{
+  const Mesh& m = test_mesh(GetParam());
+  const double tolerance = 1e-12 * bbox_diagonal(m);
+  const std::vector<Vertex> source = {Vertex(0)};
+  CGAL_ext::Geodesic_statistics exact_stats, stats;
+  const std::vector<double> exact = solve(m, source, CGAL_ext::parameters::statistics(exact_stats));
+  const std::vector<double> approx = solve(m, source, approximation(1e-6).statistics(stats));
+  const std::vector<double> dijkstra = steiner_upper_bound(m, Vertex(0), 0);
+  for(std::size_t i = 0; i < exact.size(); ++i) {
+    EXPECT_GE(approx[i], exact[i] - tolerance) << "vertex " << i;
+    EXPECT_LE(approx[i], dijkstra[i] + tolerance) << "vertex " << i;
+  }
+  EXPECT_GT(stats.wavefront_resets, 100u);
+  EXPECT_LT(stats.windows_created, exact_stats.windows_created);
+}
+
+// The approximation never goes below the exact distance, gets better as lambda grows, and at the
+// thesis's lambda = 8 stays within 1% on average.
+TEST_P(Parallel_on_mesh, approximation_error_is_bounded_and_shrinks_with_lambda)
+{
+  const Mesh& m = test_mesh(GetParam());
+  const double tolerance = 1e-12 * bbox_diagonal(m);
+  const std::vector<Vertex> source = {Vertex(0)};
+  const std::vector<double> exact = solve(m, source);
+  double previous_error = inf;
+  for(double lambda : {1., 8., 32.}) {
+    CGAL_ext::Geodesic_statistics stats;
+    const std::vector<double> approx = solve(m, source, approximation(lambda).statistics(stats));
+    for(std::size_t i = 0; i < exact.size(); ++i)
+      ASSERT_GE(approx[i], exact[i] - tolerance) << "vertex " << i << ", lambda " << lambda;
+    const double error = mean_relative_error(approx, exact);
+    EXPECT_LE(error, previous_error + 1e-12) << "lambda " << lambda;
+    if(lambda == 8.)
+      EXPECT_LT(error, 0.01);
+    previous_error = error;
+  }
+}
+
+// PAVTP is AVTP on threads: bit-identical results for every thread count.
+TEST_P(Parallel_on_mesh, pavtp_equals_avtp_for_every_thread_count)
+{
+  const Mesh& m = test_mesh(GetParam());
+  for(const Source_set& s : source_sets(m))
+    for(double lambda : {0.5, 8.}) {
+      const std::vector<double> sequential = solve_set(m, s, approximation(lambda));
+      for(int threads : {1, 2, 4}) {
+        const std::vector<double> parallel =
+          solve_set<CGAL::Parallel_tag>(m, s, approximation(lambda).number_of_threads(threads));
+        EXPECT_EQ(max_difference(parallel, sequential), 0.) << s.name << ", lambda " << lambda << ", " << threads
+                                                            << " threads";
+      }
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Meshes, Parallel_on_mesh,
+                         ::testing::Values("elephant", "mushroom", "fandisk", "cactus", "knot1"),
+                         [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });
+
+TEST(Parallel, statistics_report_the_parallel_phases)
+{
+  const Mesh& m = test_mesh("elephant");
+  CGAL_ext::Geodesic_statistics sequential, parallel;
+  solve(m, std::vector<Vertex>{Vertex(0)}, CGAL_ext::parameters::statistics(sequential));
+  solve<CGAL::Parallel_tag>(m, std::vector<Vertex>{Vertex(0)},
+                            number_of_threads(2).statistics(parallel));
+  EXPECT_GT(parallel.lists_propagated, 0u);
+  EXPECT_GT(parallel.seconds_propagation, 0.);
+  EXPECT_GE(parallel.seconds_merge, 0.);
+  EXPECT_GE(parallel.seconds_selection, 0.);
+  EXPECT_EQ(sequential.seconds_propagation, 0.); // the sequential solver has no such phases
+  EXPECT_EQ(parallel.vertices, m.number_of_vertices());
+  // Batches take vertices slightly out of order: a few more windows, not many.
+  EXPECT_LT(double(parallel.windows_created), 1.25 * double(sequential.windows_created));
+}
+
+TEST(Parallel, parallel_if_available_is_parallel_with_tbb)
+{
+  const Mesh& m = test_mesh("elephant");
+  const std::vector<Vertex> source = {Vertex(0)};
+  EXPECT_EQ(max_difference(solve<CGAL::Parallel_if_available_tag>(m, source, batch_size(64)),
+                           solve<CGAL::Parallel_tag>(m, source, batch_size(64))),
+            0.);
+}
+
+TEST(Parallel, bad_parameters_throw)
+{
+  const Mesh& m = test_mesh("elephant");
+  const std::vector<Vertex> source = {Vertex(0)};
+  auto expect_error = [](auto&& run, const std::string& fragment) {
+    try {
+      run();
+      ADD_FAILURE() << "no exception, expected one about " << fragment;
+    } catch(const CGAL_ext::Geodesic_error& e) {
+      EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
+    }
+  };
+  for(double lambda : {0., -1., std::numeric_limits<double>::quiet_NaN(), inf})
+    expect_error([&] { solve(m, source, approximation(lambda)); }, "lambda");
+  expect_error([&] { solve<CGAL::Parallel_tag>(m, source, number_of_threads(-1)); }, "threads");
+  expect_error([&] { solve<CGAL::Parallel_tag>(m, source, batch_size(0)); }, "batch size");
+}
+
+} // namespace
