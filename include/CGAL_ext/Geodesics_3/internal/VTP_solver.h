@@ -336,18 +336,22 @@ private:
     }
   }
 
-  // Appends a window to the list of half-edge h and schedules the list when it lies in the
-  // swept region. The window was already trimmed by the caller.
-  void append_window(int h, const Window& w)
+  // Appends windows to the list of half-edge h and schedules the list when it lies in the
+  // swept region. The windows were already trimmed by the caller.
+  void append_windows(int h, const Window* first, std::size_t count)
   {
-    const std::int32_t i = m_pool.allocate(w);
-    m_pool[i].next = -1;
-    if(m_tail[h] >= 0)
-      m_pool[m_tail[h]].next = i;
-    else
-      m_head[h] = i;
-    m_tail[h] = i;
-    ++m_statistics.windows_created;
+    std::int32_t tail = m_tail[h];
+    for(std::size_t k = 0; k < count; ++k) {
+      const std::int32_t i = m_pool.allocate(first[k]);
+      m_pool[i].next = -1;
+      if(tail >= 0)
+        m_pool[tail].next = i;
+      else
+        m_head[h] = i;
+      tail = i;
+    }
+    m_tail[h] = tail;
+    m_statistics.windows_created += count;
     if(m_force || inside_swept_region(h))
       schedule(h);
     else if(!m_pending[h]) {
@@ -367,7 +371,7 @@ private:
   void insert_window(int h, Window w)
   {
     if(keep_window(w, h, m_distance[m_mesh.source(h)], m_distance[m_mesh.target(h)]))
-      append_window(h, w);
+      append_windows(h, &w, 1);
   }
 
   // A pseudo-source at vertex v: whole-edge windows on the edges opposite v, and its
@@ -652,16 +656,10 @@ private:
     const int h = task.halfedge;
     if(task.apex_distance < infinity())
       relax(m_mesh.apex(h), task.apex_distance);
-    if(!task.to_ac.empty()) {
-      const int g = m_mesh.opposite(Mesh_cache::prev(h));
-      for(const Window& w : task.to_ac)
-        append_window(g, w);
-    }
-    if(!task.to_cb.empty()) {
-      const int g = m_mesh.opposite(Mesh_cache::next(h));
-      for(const Window& w : task.to_cb)
-        append_window(g, w);
-    }
+    if(!task.to_ac.empty())
+      append_windows(m_mesh.opposite(Mesh_cache::prev(h)), task.to_ac.data(), task.to_ac.size());
+    if(!task.to_cb.empty())
+      append_windows(m_mesh.opposite(Mesh_cache::next(h)), task.to_cb.data(), task.to_cb.size());
   }
 
   // Rule 2: windows of the list are clipped against each other where they overlap.
