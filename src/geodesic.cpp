@@ -1,7 +1,8 @@
 // Copyright (c) 2026 The CGAL_ext geodesics developers.
 // geodesic: the command-line front end of the package.
 //
-//   geodesic distances MESH --source S[,S...] [--max-distance D] [--output FILE] [--stats]
+//   geodesic distances MESH --source S[,S...] [--algorithm vtp|pvtp|avtp|pavtp] [--lambda L]
+//                      [--threads N] [--batch-size K] [--max-distance D] [--output FILE] [--stats]
 //
 // Vertex and face ids are those of the file (its order of vertices and faces). Every error is
 // one line `error: ...` on stderr, exit code 1 (2 for a bad command line), and no output file.
@@ -15,6 +16,11 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <CLI/CLI.hpp>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#include <tbb/task_arena.h>
+#endif
 
 #include <sys/resource.h>
 #include <unistd.h>
@@ -75,6 +81,15 @@ std::string lowercase_extension(const std::string& path)
   return ext;
 }
 
+/// The shortest text that reads back as `value` (nan and inf as such).
+template <class T>
+std::string number_text(T value)
+{
+  char text[64];
+  const auto result = std::to_chars(text, text + sizeof(text), value);
+  return std::string(text, result.ptr);
+}
+
 // ---------------------------------------------------------------------------------------------
 // Command line
 
@@ -82,10 +97,118 @@ struct Distances_options
 {
   std::string mesh;
   std::vector<std::string> sources;
+  std::string algorithm = "vtp";
+  std::optional<double> lambda;
+  std::optional<int> threads;
+  std::optional<long long> batch_size;
   double max_distance = infinity;
   std::string output;
   bool stats = false;
 };
+
+/// The solvers of the library, as named on the command line.
+struct Algorithm
+{
+  const char* name;
+  bool parallel;    // CGAL::Parallel_tag
+  bool approximate; // the named parameter approximation(lambda)
+};
+
+const Algorithm algorithms[] = {
+  {"vtp", false, false}, {"pvtp", true, false}, {"avtp", false, true}, {"pavtp", true, true}};
+
+const double default_lambda = 8;
+
+#ifdef CGAL_LINKED_WITH_TBB
+typedef CGAL::Parallel_tag Parallel_tag;
+const bool parallel_available = true;
+#else
+typedef CGAL::Sequential_tag Parallel_tag; // never run: solver_choice() refuses pvtp and pavtp
+const bool parallel_available = false;
+#endif
+
+/// While alive, lets the library's arena of `threads` threads (0: TBB's default) have them all.
+/// Otherwise TBB caps its workers at the number of cores minus one and, asked for more, prints a
+/// warning on the standard error. The tool owns its process, so a process-wide limit is fine here.
+class Thread_allowance
+{
+public:
+  explicit Thread_allowance(int threads)
+  {
+#ifdef CGAL_LINKED_WITH_TBB
+    if(threads > 0)
+      m_control.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
+#else
+    (void)threads;
+#endif
+  }
+
+private:
+#ifdef CGAL_LINKED_WITH_TBB
+  std::optional<tbb::global_control> m_control;
+#endif
+};
+
+/// The validated choice of solver and its parameters.
+struct Solver_choice
+{
+  const Algorithm* algorithm = &algorithms[0];
+  double lambda = default_lambda; // approximate solvers only
+  int threads = 0;                // parallel solvers only; 0: TBB's default
+  std::size_t batch_size = CGAL_ext::Geodesics_3::internal::VTP_solver::default_batch_size;
+  double max_distance = infinity;
+};
+
+Solver_choice solver_choice(const Distances_options& options)
+{
+  Solver_choice choice;
+  const auto found = std::find_if(std::begin(algorithms), std::end(algorithms),
+                                  [&](const Algorithm& a) { return options.algorithm == a.name; });
+  if(found == std::end(algorithms))
+    throw Tool_error("unknown algorithm '" + options.algorithm + "' (use vtp, pvtp, avtp or pavtp)");
+  choice.algorithm = found;
+  if(found->parallel && !parallel_available)
+    throw Tool_error(std::string("--algorithm ") + found->name + " needs TBB; this geodesic was built without it");
+
+  const auto invalid = [](const char* option, const char* expected, auto value) {
+    return Tool_error(std::string(option) + " must be " + expected + ", got " + number_text(value));
+  };
+  if(!(options.max_distance >= 0))
+    throw invalid("--max-distance", "a non-negative number", options.max_distance);
+  choice.max_distance = options.max_distance;
+  if(options.lambda) {
+    if(!found->approximate)
+      throw Tool_error("--lambda applies to avtp and pavtp only");
+    if(!(*options.lambda > 0) || !std::isfinite(*options.lambda))
+      throw invalid("--lambda", "a positive, finite number", *options.lambda);
+    choice.lambda = *options.lambda;
+  }
+  if(options.threads) {
+    if(!found->parallel)
+      throw Tool_error("--threads applies to pvtp and pavtp only");
+    if(*options.threads < 1)
+      throw invalid("--threads", "a positive integer", *options.threads);
+    choice.threads = *options.threads;
+  }
+  if(options.batch_size) {
+    if(!found->parallel)
+      throw Tool_error("--batch-size applies to pvtp and pavtp only");
+    if(*options.batch_size < 1)
+      throw invalid("--batch-size", "a positive integer", *options.batch_size);
+    choice.batch_size = static_cast<std::size_t>(*options.batch_size);
+  }
+  return choice;
+}
+
+/// The number of threads a parallel solver runs on.
+int effective_threads(const Solver_choice& choice)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  if(choice.threads == 0)
+    return tbb::this_task_arena::max_concurrency(); // what the library's automatic arena gets
+#endif
+  return choice.threads;
+}
 
 /// A source as written on the command line: a vertex id, or a face id and barycentric
 /// coordinates in the order of the face's vertices in the file.
@@ -333,14 +456,40 @@ Face_location vertex_location(const Mesh& mesh, const Source& s)
   throw Tool_error("source '" + s.text + "': an isolated vertex cannot be mixed with face-point sources");
 }
 
+typedef Mesh::Property_map<Vertex_index, double> Distance_map;
+
+/// The library call for one concurrency tag; `approximation` is a named parameter that is
+/// either present or absent, so it is chosen here rather than given a neutral value.
+template <class ConcurrencyTag, class LibrarySources, class NamedParameters>
+void solve_with(const Mesh& mesh, Distance_map distance, const LibrarySources& sources,
+                const Solver_choice& choice, const NamedParameters& np)
+{
+  if(choice.algorithm->approximate)
+    CGAL_ext::geodesic_distances<ConcurrencyTag>(mesh, distance, sources, np.approximation(choice.lambda));
+  else
+    CGAL_ext::geodesic_distances<ConcurrencyTag>(mesh, distance, sources, np);
+}
+
+/// The one place that maps the algorithm choice to the library call.
+template <class LibrarySources>
+void solve(const Mesh& mesh, Distance_map distance, const LibrarySources& sources, const Solver_choice& choice,
+           CGAL_ext::Geodesic_statistics& stats)
+{
+  const auto np = CGAL_ext::parameters::max_distance(choice.max_distance).statistics(stats);
+  if(choice.algorithm->parallel) {
+    const Thread_allowance allowance(choice.threads);
+    solve_with<Parallel_tag>(mesh, distance, sources, choice,
+                             np.number_of_threads(choice.threads).batch_size(choice.batch_size));
+  } else {
+    solve_with<CGAL::Sequential_tag>(mesh, distance, sources, choice, np);
+  }
+}
+
 /// Runs the library and stores the distances in the vertex property "v:distance".
-Mesh::Property_map<Vertex_index, double> compute_distances(Mesh& mesh, const Polygons& polygons,
-                                                            const std::vector<Source>& sources,
-                                                            double max_distance,
-                                                            CGAL_ext::Geodesic_statistics& stats)
+Distance_map compute_distances(Mesh& mesh, const Polygons& polygons, const std::vector<Source>& sources,
+                               const Solver_choice& choice, CGAL_ext::Geodesic_statistics& stats)
 {
   auto distance = mesh.add_property_map<Vertex_index, double>("v:distance", infinity).first;
-  const auto np = CGAL_ext::parameters::max_distance(max_distance).statistics(stats);
   // The library takes a range of one kind of source: vertices, or face locations.
   const bool only_vertices =
     std::all_of(sources.begin(), sources.end(), [](const Source& s) { return bool(s.vertex); });
@@ -348,7 +497,7 @@ Mesh::Property_map<Vertex_index, double> compute_distances(Mesh& mesh, const Pol
     std::vector<Vertex_index> vertices;
     for(const Source& s : sources)
       vertices.emplace_back(static_cast<Mesh::size_type>(*s.vertex));
-    CGAL_ext::geodesic_distances(mesh, distance, vertices, np);
+    solve(mesh, distance, vertices, choice, stats);
   } else {
     std::vector<Face_location> locations;
     for(const Source& s : sources) {
@@ -356,7 +505,7 @@ Mesh::Property_map<Vertex_index, double> compute_distances(Mesh& mesh, const Pol
       locations.push_back(s.vertex ? vertex_location(mesh, s)
                                    : library_location(mesh, polygons[s.face], f, s.barycentric));
     }
-    CGAL_ext::geodesic_distances(mesh, distance, locations, np);
+    solve(mesh, distance, locations, choice, stats);
   }
   return distance;
 }
@@ -434,11 +583,7 @@ double peak_rss_mb()
 int run_distances(const Distances_options& options)
 {
   // Validate the command line before the (possibly long) reading and solving.
-  if(!(options.max_distance >= 0)) {
-    std::ostringstream msg;
-    msg << "--max-distance must be a non-negative number, got " << options.max_distance;
-    throw Tool_error(msg.str());
-  }
+  const Solver_choice choice = solver_choice(options);
   std::vector<Source> sources;
   for(const std::string& text : options.sources)
     sources.push_back(parse_source(text));
@@ -455,7 +600,7 @@ int run_distances(const Distances_options& options)
     check_source_range(s, mesh);
 
   CGAL_ext::Geodesic_statistics stats;
-  const auto distance = compute_distances(mesh, soup.polygons, sources, options.max_distance, stats);
+  const auto distance = compute_distances(mesh, soup.polygons, sources, choice, stats);
 
   if(!format) {
     if(!write_txt(std::cout, mesh, distance) || !std::cout.flush())
@@ -466,17 +611,30 @@ int run_distances(const Distances_options& options)
     write_atomically(options.output, [&](std::ostream& os) { return write_ply(os, mesh, distance); });
   }
 
-  if(options.stats)
-    std::cerr << "vertices=" << mesh.number_of_vertices() << "\n"
-              << "faces=" << mesh.number_of_faces() << "\n"
-              << "sources=" << sources.size() << "\n"
-              << "seconds_read=" << seconds_read << "\n"
-              << "seconds_setup=" << stats.seconds_setup << "\n"
-              << "seconds_solve=" << stats.seconds_solve << "\n"
-              << "windows_created=" << stats.windows_created << "\n"
-              << "peak_windows=" << stats.peak_windows << "\n"
-              << "peak_rss_mb=" << peak_rss_mb() << "\n"
-              << "max_distance=" << std::setprecision(17) << farthest_finite(mesh, distance) << std::endl;
+  if(options.stats) {
+    std::ostringstream s;
+    s << "algorithm=" << choice.algorithm->name << "\n";
+    if(choice.algorithm->parallel)
+      s << "threads=" << effective_threads(choice) << "\n";
+    if(choice.algorithm->approximate)
+      s << "lambda=" << number_text(choice.lambda) << "\n";
+    s << "vertices=" << mesh.number_of_vertices() << "\n"
+      << "faces=" << mesh.number_of_faces() << "\n"
+      << "sources=" << sources.size() << "\n"
+      << "seconds_read=" << seconds_read << "\n"
+      << "seconds_setup=" << stats.seconds_setup << "\n"
+      << "seconds_solve=" << stats.seconds_solve << "\n"
+      << "seconds_selection=" << stats.seconds_selection << "\n"
+      << "seconds_propagation=" << stats.seconds_propagation << "\n"
+      << "seconds_merge=" << stats.seconds_merge << "\n"
+      << "windows_created=" << stats.windows_created << "\n"
+      << "peak_windows=" << stats.peak_windows << "\n"
+      << "lists_propagated=" << stats.lists_propagated << "\n"
+      << "wavefront_resets=" << stats.wavefront_resets << "\n"
+      << "peak_rss_mb=" << peak_rss_mb() << "\n"
+      << "max_distance=" << std::setprecision(17) << farthest_finite(mesh, distance) << "\n";
+    std::cerr << s.str() << std::flush;
+  }
   return 0;
 }
 
@@ -491,6 +649,18 @@ void add_distances_command(CLI::App& app, Distances_options& options)
     ->required()
     ->delimiter(',')
     ->allow_extra_args(false);
+  cmd->add_option("--algorithm", options.algorithm,
+                  "Solver: vtp (exact), pvtp (exact, parallel), avtp (approximate), pavtp (approximate, "
+                  "parallel); default: vtp");
+  cmd->add_option("--lambda", options.lambda,
+                  "avtp and pavtp: the wavefront is reset every lambda mean edge lengths; smaller is faster "
+                  "and coarser, distances are never below the exact ones; positive; default: " +
+                    number_text(default_lambda));
+  cmd->add_option("--threads", options.threads,
+                  "pvtp and pavtp: number of threads, at least 1; default: all cores");
+  cmd->add_option("--batch-size", options.batch_size,
+                  "pvtp and pavtp: window lists propagated together, at least 1; default: " +
+                    std::to_string(CGAL_ext::Geodesics_3::internal::VTP_solver::default_batch_size));
   cmd->add_option("--max-distance", options.max_distance,
                   "Stop the propagation at this distance; farther vertices get inf");
   cmd->add_option("--output", options.output,
@@ -503,7 +673,7 @@ void add_distances_command(CLI::App& app, Distances_options& options)
 
 int main(int argc, char** argv)
 {
-  CLI::App app{"Exact geodesic distances on triangle meshes", "geodesic"};
+  CLI::App app{"Geodesic distances on triangle meshes, exact or approximate", "geodesic"};
   // At most one subcommand: CLI11 then reports an unknown one as unexpected, not as missing.
   app.require_subcommand(0, 1);
   Distances_options distances;

@@ -143,6 +143,18 @@ void expect_same_distances(const std::vector<double>& a, const std::vector<doubl
   }
 }
 
+/// Equal within `relative` times the larger magnitude (so exactly equal at 0 and at infinity).
+void expect_relatively_close(const std::vector<double>& a, const std::vector<double>& b, double relative)
+{
+  ASSERT_EQ(a.size(), b.size());
+  for(std::size_t i = 0; i < a.size(); ++i) {
+    if(std::isinf(a[i]) || std::isinf(b[i]))
+      EXPECT_EQ(a[i], b[i]) << "vertex " << i;
+    else
+      EXPECT_NEAR(a[i], b[i], relative * std::max(std::abs(a[i]), std::abs(b[i]))) << "vertex " << i;
+  }
+}
+
 class Tool : public ::testing::Test
 {
 protected:
@@ -190,6 +202,7 @@ protected:
     const Result r = run(args + " --output " + output);
     EXPECT_EQ(r.exit_code, 0) << r.err;
     EXPECT_EQ(r.out, "");
+    EXPECT_EQ(r.err, "");
     return parse_distances(read_text(path(output)));
   }
 
@@ -351,28 +364,136 @@ TEST_F(Tool, max_distance_leaves_far_vertices_at_infinity)
   EXPECT_NE(std::find(lines.begin(), lines.end(), "inf"), lines.end());
 }
 
-TEST_F(Tool, stats_on_stderr)
+// --stats for each solver: the common keys, and the solver's own.
+struct Algorithm_case
 {
-  const Result r = run("distances '" + elephant + "' --source 0,f:3:0.2:0.2:0.6 --stats --output d.txt");
+  const char* name;
+  std::string args;      // the solver options
+  const char* algorithm; // the expected algorithm=
+  const char* threads;   // the expected threads=, "" if absent, "*" for any positive count
+  const char* lambda;    // the expected lambda=, "" if absent
+};
+
+void PrintTo(const Algorithm_case& c, std::ostream* os) { *os << c.name; }
+
+const Algorithm_case algorithm_cases[] = {
+  {"default", "", "vtp", "", ""},
+  {"vtp", "--algorithm vtp", "vtp", "", ""},
+  {"pvtp", "--algorithm pvtp --threads 2", "pvtp", "2", ""},
+  {"pvtp_all_cores", "--algorithm pvtp --batch-size 64", "pvtp", "*", ""},
+  {"avtp_default_lambda", "--algorithm avtp", "avtp", "", "8"},
+  {"avtp", "--algorithm avtp --lambda 0.5", "avtp", "", "0.5"},
+  {"pavtp", "--algorithm pavtp --lambda 2 --threads 3", "pavtp", "3", "2"},
+};
+
+class Stats : public Tool, public ::testing::WithParamInterface<Algorithm_case> {};
+
+TEST_P(Stats, on_stderr)
+{
+  const Algorithm_case& c = GetParam();
+  const Result r =
+    run("distances '" + elephant + "' --source 0,f:3:0.2:0.2:0.6 " + c.args + " --stats --output d.txt");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const std::vector<double> d = parse_distances(read_text(path("d.txt")));
   const auto kv = parse_key_values(r.err);
-  for(const char* key : {"vertices", "faces", "sources", "seconds_read", "seconds_setup", "seconds_solve",
-                         "windows_created", "peak_windows", "peak_rss_mb", "max_distance"}) {
+  std::vector<std::string> keys = {"vertices", "faces", "sources", "seconds_read", "seconds_setup",
+                                   "seconds_solve", "seconds_selection", "seconds_propagation",
+                                   "seconds_merge", "windows_created", "peak_windows", "lists_propagated",
+                                   "wavefront_resets", "peak_rss_mb", "max_distance"};
+  if(*c.threads)
+    keys.push_back("threads");
+  if(*c.lambda)
+    keys.push_back("lambda");
+  for(const std::string& key : keys) {
     ASSERT_EQ(kv.count(key), 1u) << "missing " << key << " in:\n" << r.err;
     char* end = nullptr;
     const double value = std::strtod(kv.at(key).c_str(), &end);
     EXPECT_TRUE(*end == '\0' && std::isfinite(value) && value >= 0) << key << "=" << kv.at(key);
   }
-  EXPECT_EQ(kv.size(), 10u);
+  ASSERT_EQ(kv.count("algorithm"), 1u) << r.err;
+  EXPECT_EQ(kv.at("algorithm"), c.algorithm);
+  EXPECT_EQ(kv.size(), keys.size() + 1) << r.err;
   EXPECT_EQ(kv.at("vertices"), "2775");
   EXPECT_EQ(kv.at("faces"), "5558");
   EXPECT_EQ(kv.at("sources"), "2");
   EXPECT_GT(std::stod(kv.at("windows_created")), 0);
   EXPECT_GT(std::stod(kv.at("peak_windows")), 0);
+  EXPECT_GT(std::stod(kv.at("lists_propagated")), 0);
   EXPECT_GT(std::stod(kv.at("peak_rss_mb")), 1);
   EXPECT_EQ(std::stod(kv.at("max_distance")), *std::max_element(d.begin(), d.end()));
+  if(std::string(c.threads) == "*")
+    EXPECT_GE(std::stoi(kv.at("threads")), 1);
+  else if(*c.threads)
+    EXPECT_EQ(kv.at("threads"), c.threads);
+  if(*c.lambda) {
+    EXPECT_EQ(kv.at("lambda"), c.lambda);
+    EXPECT_GT(std::stod(kv.at("wavefront_resets")), 0); // the elephant is many lambdas across
+  } else {
+    EXPECT_EQ(kv.at("wavefront_resets"), "0");
+  }
 }
+
+INSTANTIATE_TEST_SUITE_P(Tool, Stats, ::testing::ValuesIn(algorithm_cases),
+                         [](const ::testing::TestParamInfo<Algorithm_case>& info) { return info.param.name; });
+
+// ---------------------------------------------------------------------------------------------
+// The parallel and approximate solvers against the exact sequential one, on each mesh
+
+class Solvers : public Tool, public ::testing::WithParamInterface<std::string>
+{
+protected:
+  /// The distances from two sources (a vertex and a face point) with the solver options `args`.
+  std::vector<double> solve(const std::string& args, const std::string& output = "d.txt") const
+  {
+    return distances("distances '" + GetParam() + "' --source 0,f:7:0.2:0.5:0.3 " + args, output);
+  }
+
+  /// The same, and the text of the output file.
+  std::string solve_text(const std::string& args) const
+  {
+    solve(args, "t.txt");
+    return read_text(path("t.txt"));
+  }
+};
+
+TEST_P(Solvers, pvtp_is_vtp_on_any_number_of_threads)
+{
+  const std::vector<double> vtp = solve("");
+  const std::string one = solve_text("--algorithm pvtp --threads 1");
+  EXPECT_EQ(solve_text("--algorithm pvtp --threads 2"), one);
+  EXPECT_EQ(solve_text("--algorithm pvtp --threads 4"), one);
+  expect_relatively_close(parse_distances(one), vtp, 1e-12);
+  expect_relatively_close(solve("--algorithm pvtp --threads 2 --batch-size 7"), vtp, 1e-12);
+  expect_relatively_close(solve("--algorithm pvtp"), vtp, 1e-12);
+}
+
+TEST_P(Solvers, avtp_is_pavtp_and_never_below_vtp)
+{
+  const std::vector<double> vtp = solve("");
+  const std::string avtp = solve_text("--algorithm avtp --lambda 8");
+  EXPECT_EQ(solve_text("--algorithm pavtp --lambda 8 --threads 2"), avtp);
+  EXPECT_EQ(solve_text("--algorithm avtp"), avtp) << "the default lambda is not 8";
+  const std::vector<double> d = parse_distances(avtp);
+  ASSERT_EQ(d.size(), vtp.size());
+  std::size_t above = 0;
+  for(std::size_t i = 0; i < d.size(); ++i) {
+    EXPECT_GE(d[i], vtp[i] - 1e-12) << "vertex " << i;
+    above += d[i] > vtp[i] + 1e-9;
+  }
+  EXPECT_GT(above, 0u) << "lambda 8 did not approximate anything";
+}
+
+TEST_P(Solvers, avtp_with_a_huge_lambda_is_vtp)
+{
+  const std::vector<double> vtp = solve("");
+  expect_relatively_close(solve("--algorithm avtp --lambda 1e12"), vtp, 1e-12);
+  expect_relatively_close(solve("--algorithm pavtp --lambda 1e12 --threads 2"), vtp, 1e-12);
+}
+
+INSTANTIATE_TEST_SUITE_P(Tool, Solvers, ::testing::Values(elephant, mushroom),
+                         [](const ::testing::TestParamInfo<std::string>& info) {
+                           return fs::path(info.param).stem().string();
+                         });
 
 // Two tetrahedra: a source on one leaves the other at infinity, which is not an error.
 TEST_F(Tool, other_component_is_unreachable)
@@ -411,6 +532,9 @@ TEST_F(Tool, help)
     EXPECT_NE(r.out.find("distances"), std::string::npos) << args;
     EXPECT_NE(r.out.find(args == "--help" ? "SUBCOMMAND" : "--max-distance"), std::string::npos) << r.out;
   }
+  const std::string help = run("distances --help").out;
+  for(const char* piece : {"--algorithm", "pavtp", "--lambda", "default: 8", "--threads", "--batch-size"})
+    EXPECT_NE(help.find(piece), std::string::npos) << piece << " not in:\n" << help;
 }
 
 // An error while writing (here the target is a folder) leaves no temporary file behind.
@@ -500,6 +624,23 @@ const Bad_case bad_cases[] = {
   {"no_subcommand", "", "d.txt", "not expected"},
   {"missing_source", E, "d.txt", "--source"},
   {"missing_mesh", "distances --source 0", "d.txt", "MESH"},
+  {"unknown_algorithm", E + " --source 0 --algorithm dijkstra", "d.txt", "unknown algorithm 'dijkstra'"},
+  {"lambda_zero", E + " --source 0 --algorithm avtp --lambda 0", "d.txt", "--lambda must be a positive"},
+  {"lambda_negative", E + " --source 0 --algorithm pavtp --lambda -1", "d.txt", "got -1"},
+  {"lambda_nan", E + " --source 0 --algorithm avtp --lambda nan", "d.txt", "got nan"},
+  {"lambda_infinite", E + " --source 0 --algorithm avtp --lambda inf", "d.ply", "got inf"},
+  {"lambda_not_a_number", E + " --source 0 --algorithm avtp --lambda coarse", "d.txt", "--lambda"},
+  {"lambda_with_vtp", E + " --source 0 --lambda 8", "d.txt", "error: --lambda applies to avtp and pavtp only"},
+  {"lambda_with_pvtp", E + " --source 0 --algorithm pvtp --lambda 8", "d.txt", "--lambda applies to"},
+  {"threads_zero", E + " --source 0 --algorithm pvtp --threads 0", "d.txt", "--threads must be a positive integer"},
+  {"threads_negative", E + " --source 0 --algorithm pavtp --threads -2", "d.txt", "got -2"},
+  {"threads_not_a_number", E + " --source 0 --algorithm pvtp --threads x", "d.txt", "--threads"},
+  {"threads_fraction", E + " --source 0 --algorithm pvtp --threads 1.5", "d.txt", "--threads"},
+  {"threads_with_vtp", E + " --source 0 --threads 2", "d.txt", "error: --threads applies to pvtp and pavtp only"},
+  {"threads_with_avtp", E + " --source 0 --algorithm avtp --threads 2", "d.ply", "--threads applies to"},
+  {"batch_size_zero", E + " --source 0 --algorithm pvtp --batch-size 0", "d.txt", "--batch-size must be a positive integer"},
+  {"batch_size_negative", E + " --source 0 --algorithm pvtp --batch-size=-5", "d.txt", "got -5"},
+  {"batch_size_with_vtp", E + " --source 0 --batch-size 8", "d.txt", "--batch-size applies to pvtp and pavtp only"},
 };
 
 class Bad_input : public Tool, public ::testing::WithParamInterface<Bad_case>
