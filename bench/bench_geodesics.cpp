@@ -6,12 +6,15 @@
 // is the peak of that method alone (plus the mesh, reported separately as rss_base_mb).
 //
 //   bench_geodesics --mesh FILE --method M [--source V] [--subdivide N] [--dump FILE]
+//                   [--threads T] [--batch-size K] [--lambda L]
 //   bench_geodesics --mesh FILE --subdivide N --write OUT.off     (cache a Loop subdivision)
 //   bench_geodesics --mesh FILE --info                            (size and bounding box only)
 //
-// Methods: vtp (CGAL_ext::geodesic_distances, exact), smsp (CGAL::Surface_mesh_shortest_path,
-// exact), heat_direct / heat_idt (CGAL::Heat_method_3, approximate), dijkstra (graph distance
-// along the mesh edges, an upper bound).
+// Methods: vtp (CGAL_ext::geodesic_distances, exact), pvtp (the same with CGAL::Parallel_tag on
+// --threads T threads, --batch-size K lists a batch, exact), avtp (approximation(--lambda L)),
+// pavtp (approximation(L) with CGAL::Parallel_tag on T threads), smsp
+// (CGAL::Surface_mesh_shortest_path, exact), heat_direct / heat_idt (CGAL::Heat_method_3,
+// approximate), dijkstra (graph distance along the mesh edges, an upper bound).
 //
 // Every time is wall-clock (std::chrono::steady_clock) and excludes reading the mesh.
 // `--dump FILE` writes the distances as raw native doubles, one per vertex in index order.
@@ -88,8 +91,10 @@ double peak_rss_mb()
 {
   if(!msg.empty())
     std::cerr << "bench_geodesics: " << msg << "\n";
-  std::cerr << "usage: bench_geodesics --mesh FILE --method vtp|smsp|heat_direct|heat_idt|dijkstra\n"
+  std::cerr << "usage: bench_geodesics --mesh FILE --method vtp|pvtp|avtp|pavtp|smsp|heat_direct|heat_idt|dijkstra\n"
                "                       [--source V] [--subdivide N] [--dump FILE]\n"
+               "                       [--threads T] [--batch-size K]   (pvtp, pavtp; T = 0: as many as TBB chooses)\n"
+               "                       [--lambda L]                     (avtp, pavtp: required)\n"
                "       bench_geodesics --mesh FILE --subdivide N --write OUT.off\n"
                "       bench_geodesics --mesh FILE [--subdivide N] --info\n";
   std::exit(2);
@@ -113,24 +118,57 @@ struct Result_line
 // Fills `d` (indexed by vertex index) and `r` with the method's own keys.
 typedef std::vector<double> Distances;
 
-void run_vtp(const Mesh& tm, vertex_descriptor source, Distances& d, Result_line& r)
+// The options of the VTP family (vtp, pvtp, avtp, pavtp).
+struct Vtp_options
 {
+  bool parallel = false;
+  bool approximate = false;
+  int threads = 0;
+  std::size_t batch_size = CGAL_ext::Geodesics_3::internal::VTP_solver::default_batch_size;
+  double lambda = 0;
+};
+
+void run_vtp(const Mesh& tm, vertex_descriptor source, const Vtp_options& o, Distances& d, Result_line& r)
+{
+  namespace params = CGAL_ext::parameters;
   CGAL_ext::Geodesic_statistics stats;
   d.assign(num_vertices(tm), 0.);
   auto dmap = CGAL::make_property_map(d);
   const auto t = Clock::now();
-  CGAL_ext::geodesic_distances(tm, dmap, source, CGAL_ext::parameters::statistics(stats));
+  if(o.parallel && o.approximate)
+    CGAL_ext::geodesic_distances<CGAL::Parallel_tag>(
+      tm, dmap, source,
+      params::approximation(o.lambda).number_of_threads(o.threads).batch_size(o.batch_size).statistics(stats));
+  else if(o.parallel)
+    CGAL_ext::geodesic_distances<CGAL::Parallel_tag>(
+      tm, dmap, source, params::number_of_threads(o.threads).batch_size(o.batch_size).statistics(stats));
+  else if(o.approximate)
+    CGAL_ext::geodesic_distances(tm, dmap, source, params::approximation(o.lambda).statistics(stats));
+  else
+    CGAL_ext::geodesic_distances(tm, dmap, source, params::statistics(stats));
   const double total = seconds_since(t);
   const double nv = double(num_vertices(tm));
+  if(o.parallel) {
+    r.add("threads", o.threads);
+    r.add("batch_size", o.batch_size);
+  }
+  if(o.approximate)
+    r.add("lambda", o.lambda);
   r.add("seconds_setup", stats.seconds_setup);
   r.add("seconds_solve", stats.seconds_solve);
   r.add("seconds_total", total);
+  // Phases of the batched solver (pvtp, avtp, pavtp; zero for vtp but the wavefront resets).
+  r.add("seconds_selection", stats.seconds_selection);
+  r.add("seconds_propagation", stats.seconds_propagation);
+  r.add("seconds_merge", stats.seconds_merge);
   r.add("windows_created", stats.windows_created);
   r.add("windows_per_vertex", double(stats.windows_created) / nv);
   r.add("peak_windows", stats.peak_windows);
+  r.add("peak_window_bytes", stats.peak_window_bytes);
   r.add("peak_window_mb", double(stats.peak_window_bytes) / (1024.0 * 1024.0));
   r.add("vertices_popped", stats.vertices_popped);
   r.add("lists_propagated", stats.lists_propagated);
+  r.add("wavefront_resets", stats.wavefront_resets);
   r.add("ns_per_window", stats.windows_created > 0 ? 1e9 * stats.seconds_solve / double(stats.windows_created) : 0.);
 }
 
@@ -323,6 +361,8 @@ int main(int argc, char* argv[])
   long source_index = 0;
   int subdivide = 0;
   bool info = false;
+  Vtp_options vtp_options;
+  bool threads_given = false, batch_given = false, lambda_given = false;
   for(int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     auto value = [&]() -> std::string {
@@ -330,18 +370,45 @@ int main(int argc, char* argv[])
         usage("missing value after " + a);
       return argv[++i];
     };
+    // A number after `a`, the whole of the argument (usage() otherwise).
+    auto number = [&](auto convert) {
+      const std::string v = value();
+      try {
+        std::size_t end = 0;
+        const auto x = convert(v, &end);
+        if(end == v.size())
+          return x;
+      } catch(const std::exception&) {
+      }
+      usage("bad number after " + a + ": " + v);
+    };
+    auto to_long = [](const std::string& v, std::size_t* end) { return std::stol(v, end); };
+    auto to_double = [](const std::string& v, std::size_t* end) { return std::stod(v, end); };
     if(a == "--mesh")
       mesh_file = value();
     else if(a == "--method")
       method = value();
     else if(a == "--source")
-      source_index = std::stol(value());
+      source_index = number(to_long);
     else if(a == "--subdivide")
-      subdivide = std::stoi(value());
+      subdivide = int(number(to_long));
     else if(a == "--dump")
       dump_file = value();
     else if(a == "--write")
       write_file = value();
+    else if(a == "--threads") {
+      vtp_options.threads = int(number(to_long));
+      threads_given = true;
+    } else if(a == "--batch-size") {
+      const long k = number(to_long);
+      if(k <= 0)
+        usage("--batch-size must be positive");
+      vtp_options.batch_size = std::size_t(k);
+      batch_given = true;
+    } else if(a == "--lambda") {
+      vtp_options.lambda = number(to_double);
+      lambda_given = true;
+    }
     else if(a == "--info")
       info = true;
     else if(a == "-h" || a == "--help")
@@ -384,9 +451,22 @@ int main(int argc, char* argv[])
       return 0;
     }
 
-    if(!method.empty() && method != "vtp" && method != "smsp" && method != "heat_direct" &&
+    const bool vtp_family = method == "vtp" || method == "pvtp" || method == "avtp" || method == "pavtp";
+    if(!method.empty() && !vtp_family && method != "smsp" && method != "heat_direct" &&
        method != "heat_idt" && method != "dijkstra")
       usage("unknown method " + method);
+    vtp_options.parallel = method == "pvtp" || method == "pavtp";
+    vtp_options.approximate = method == "avtp" || method == "pavtp";
+    if((threads_given || batch_given) && !vtp_options.parallel)
+      usage("--threads and --batch-size are options of pvtp and pavtp");
+    if(lambda_given && !vtp_options.approximate)
+      usage("--lambda is an option of avtp and pavtp");
+    if(vtp_options.approximate && !lambda_given)
+      usage(method + " needs --lambda L");
+    if(vtp_options.approximate && !(vtp_options.lambda > 0 && std::isfinite(vtp_options.lambda)))
+      usage("--lambda must be positive");
+    if(vtp_options.threads < 0)
+      usage("--threads must be non-negative");
 
     const std::size_t n = num_vertices(tm);
     if(source_index < 0 || std::size_t(source_index) >= n)
@@ -409,8 +489,8 @@ int main(int argc, char* argv[])
     }
 
     Distances d;
-    if(method == "vtp")
-      run_vtp(tm, source, d, r);
+    if(vtp_family)
+      run_vtp(tm, source, vtp_options, d, r);
     else if(method == "smsp")
       run_smsp(tm, source, d, r);
     else if(method == "heat_direct")
