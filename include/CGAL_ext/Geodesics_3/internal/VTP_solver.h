@@ -13,6 +13,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/partitioner.h>
+#include <tbb/task_arena.h>
 #endif
 
 #include <algorithm>
@@ -84,10 +85,10 @@ inline Source_point normalized_source(const Mesh_cache& m, Source_point s)
 struct List_task
 {
   int halfedge = -1;
-  std::int32_t chain = -1;  // the list's windows, detached from it
+  Window* input = nullptr;  // the list's windows, detached from it
   double apex_distance = 0; // shortest path to the apex found through the list
-  std::vector<Window> windows;
-  std::vector<Window> to_ac, to_cb; // children for the lists across A->C and C->B
+  std::vector<Window> windows;  // the input, trimmed and pruned
+  Window_chain to_ac, to_cb;    // children for the lists across A->C and C->B
 };
 
 /// Geodesic distances from any number of sources by vertex-oriented triangle propagation
@@ -125,8 +126,7 @@ public:
     , m_taken(mesh.number_of_vertices, 0)
     , m_emits(mesh.number_of_vertices, 0)
     , m_is_stop(mesh.number_of_vertices, 0)
-    , m_head(mesh.number_of_halfedges(), -1)
-    , m_tail(mesh.number_of_halfedges(), -1)
+    , m_head(mesh.number_of_halfedges(), nullptr)
     , m_queued(mesh.number_of_halfedges(), 0)
     , m_pending(mesh.number_of_halfedges(), 0)
     , m_buckets(mesh.mean_edge_length / std::max(1., mesh.mean_anisotropy))
@@ -198,6 +198,13 @@ public:
     const auto start = std::chrono::steady_clock::now();
     if(m_sources.empty())
       throw Geodesic_error("no source was given");
+#ifdef CGAL_LINKED_WITH_TBB
+    if(m_parallel) {
+      // One pool slot per thread of the arena run() executes in.
+      m_pool.set_number_of_slots(std::size_t(tbb::this_task_arena::max_concurrency()));
+      m_main_slot = std::size_t(std::max(0, tbb::this_task_arena::current_thread_index()));
+    }
+#endif
     for(const Source_point& s : m_sources) {
       if(s.vertex >= 0) {
         m_emits[s.vertex] = 1;
@@ -222,8 +229,8 @@ public:
           d = infinity();
     m_statistics.vertices = m_mesh.number_of_vertices;
     m_statistics.faces = m_mesh.number_of_faces;
-    m_statistics.peak_windows = m_pool.peak();
-    m_statistics.peak_window_bytes = m_pool.capacity_bytes();
+    m_statistics.peak_windows = m_peak_windows;
+    m_statistics.peak_window_bytes = m_pool.bytes();
     m_statistics.seconds_solve = seconds_since(start);
   }
 
@@ -330,28 +337,20 @@ private:
 
   void schedule(int h)
   {
-    if(m_head[h] >= 0 && !m_queued[h]) {
+    if(m_head[h] && !m_queued[h]) {
       m_queued[h] = 1;
       m_fifo.push_back(h);
     }
   }
 
-  // Appends windows to the list of half-edge h and schedules the list when it lies in the
-  // swept region. The windows were already trimmed by the caller.
-  void append_windows(int h, const Window* first, std::size_t count)
+  // Adds a chain of windows (already trimmed) to the list of half-edge h, and schedules the list
+  // when it lies in the swept region. The order of windows in a list does not matter: they are
+  // sorted when the list is propagated.
+  void add_chain(int h, const Window_chain& chain)
   {
-    std::int32_t tail = m_tail[h];
-    for(std::size_t k = 0; k < count; ++k) {
-      const std::int32_t i = m_pool.allocate(first[k]);
-      m_pool[i].next = -1;
-      if(tail >= 0)
-        m_pool[tail].next = i;
-      else
-        m_head[h] = i;
-      tail = i;
-    }
-    m_tail[h] = tail;
-    m_statistics.windows_created += count;
+    chain.tail->next = m_head[h];
+    m_head[h] = chain.head;
+    m_statistics.windows_created += chain.size;
     if(m_force || inside_swept_region(h))
       schedule(h);
     else if(!m_pending[h]) {
@@ -370,8 +369,12 @@ private:
 
   void insert_window(int h, Window w)
   {
-    if(keep_window(w, h, m_distance[m_mesh.source(h)], m_distance[m_mesh.target(h)]))
-      append_windows(h, &w, 1);
+    if(keep_window(w, h, m_distance[m_mesh.source(h)], m_distance[m_mesh.target(h)])) {
+      Window_chain chain;
+      chain.push_back(m_pool.allocate(m_main_slot, w));
+      add_chain(h, chain);
+      note_live_windows();
+    }
   }
 
   // A pseudo-source at vertex v: whole-edge windows on the edges opposite v, and its
@@ -497,13 +500,11 @@ private:
 
   void clear_list(int h)
   {
-    for(std::int32_t i = m_head[h]; i >= 0;) {
-      const std::int32_t next = m_pool[i].next;
-      m_pool.release(i);
-      i = next;
-    }
-    m_head[h] = m_tail[h] = -1;
+    m_pool.release_chain(m_main_slot, m_head[h]);
+    m_head[h] = nullptr;
   }
+
+  void note_live_windows() { m_peak_windows = std::max(m_peak_windows, m_pool.live()); }
 
   // Propagates the scheduled lists, and the lists they schedule, until none is left.
   void drain()
@@ -513,8 +514,9 @@ private:
       List_task& task = m_task_one;
       for(std::size_t i = 0; i < m_fifo.size(); ++i) {
         detach(m_fifo[i], task);
-        propagate(task);
+        propagate(task, m_main_slot);
         merge(task);
+        note_live_windows();
       }
       m_fifo.clear();
       return;
@@ -532,6 +534,7 @@ private:
       start = std::chrono::steady_clock::now();
       for(std::size_t i = 0; i < n; ++i)
         merge(m_tasks[i]);
+      note_live_windows();
       m_statistics.seconds_merge += seconds_since(start);
     }
   }
@@ -547,8 +550,9 @@ private:
         tbb::blocked_range<std::size_t>(0, n, 8),
         [this](const tbb::blocked_range<std::size_t>& r) {
           sanitizer_acquire(&m_handoff);
+          const std::size_t slot = std::size_t(tbb::this_task_arena::current_thread_index());
           for(std::size_t i = r.begin(); i != r.end(); ++i)
-            propagate(m_tasks[i]);
+            propagate(m_tasks[i], slot);
           sanitizer_release(&m_handback);
         },
         tbb::simple_partitioner());
@@ -557,7 +561,7 @@ private:
     }
 #endif
     for(std::size_t i = 0; i < n; ++i)
-      propagate(m_tasks[i]);
+      propagate(m_tasks[i], m_main_slot);
   }
 
   // Propagates every list that still holds windows, whether or not its edge was swept; used
@@ -582,13 +586,14 @@ private:
   {
     m_queued[h] = 0;
     task.halfedge = h;
-    task.chain = m_head[h];
-    m_head[h] = m_tail[h] = -1;
+    task.input = m_head[h];
+    m_head[h] = nullptr;
   }
 
-  // Takes the windows of the task's list across the face of its half-edge. Reads the mesh, the
-  // window pool and the vertex distances; writes only `task`.
-  void propagate(List_task& task) const
+  // Takes the windows of the task's list across the face of its half-edge. Reads the mesh and
+  // the vertex distances; writes only `task` and the pool's `slot` (the calling thread's), which
+  // takes back the list's windows and gives the children.
+  void propagate(List_task& task, std::size_t slot)
   {
     const int h = task.halfedge;
     std::vector<Window>& windows = task.windows;
@@ -599,11 +604,13 @@ private:
     const Halfedge_frame& f = m_mesh.frame[h];
     const double d_from = m_distance[m_mesh.source(h)];
     const double d_to = m_distance[m_mesh.target(h)];
-    for(std::int32_t i = task.chain; i >= 0; i = m_pool[i].next) {
-      Window w = m_pool[i];
+    for(const Window* p = task.input; p; p = p->next) {
+      Window w = *p;
       if(keep_window(w, h, d_from, d_to))
         windows.push_back(w);
     }
+    m_pool.release_chain(slot, task.input);
+    task.input = nullptr;
     if(windows.empty())
       return;
     prune_pairs(windows);
@@ -632,34 +639,28 @@ private:
         const double hi = std::min({w.b1, split, crossing});
         if(hi > w.b0 && make_child(w, w.b0, hi, to_ac, m_min_window_length, child) &&
            keep_window(child, g_ac, d_from, d_apex)) // g_ac runs from A to C
-          task.to_ac.push_back(child);
+          task.to_ac.push_back(m_pool.allocate(slot, child));
       }
       if(g_cb >= 0) {
         const double lo = std::max({w.b0, split, crossing});
         if(w.b1 > lo && make_child(w, lo, w.b1, to_cb, m_min_window_length, child) &&
            keep_window(child, g_cb, d_apex, d_to)) // g_cb runs from C to B
-          task.to_cb.push_back(child);
+          task.to_cb.push_back(m_pool.allocate(slot, child));
       }
     }
   }
 
-  // Applies a propagated task: frees its windows, updates the apex, appends the children.
+  // Applies a propagated task: updates the apex, adds the children to their lists.
   void merge(List_task& task)
   {
-    for(std::int32_t i = task.chain; i >= 0;) {
-      const std::int32_t next = m_pool[i].next;
-      m_pool.release(i);
-      i = next;
-    }
-    task.chain = -1;
     ++m_statistics.lists_propagated;
     const int h = task.halfedge;
     if(task.apex_distance < infinity())
       relax(m_mesh.apex(h), task.apex_distance);
-    if(!task.to_ac.empty())
-      append_windows(m_mesh.opposite(Mesh_cache::prev(h)), task.to_ac.data(), task.to_ac.size());
-    if(!task.to_cb.empty())
-      append_windows(m_mesh.opposite(Mesh_cache::next(h)), task.to_cb.data(), task.to_cb.size());
+    if(task.to_ac.size)
+      add_chain(m_mesh.opposite(Mesh_cache::prev(h)), task.to_ac);
+    if(task.to_cb.size)
+      add_chain(m_mesh.opposite(Mesh_cache::next(h)), task.to_cb);
   }
 
   // Rule 2: windows of the list are clipped against each other where they overlap.
@@ -694,7 +695,7 @@ private:
   std::vector<std::uint8_t> m_taken;
   std::vector<std::uint8_t> m_emits; // pseudo-source, source, or made a source by a reset
   std::vector<std::uint8_t> m_is_stop;
-  std::vector<std::int32_t> m_head, m_tail;
+  std::vector<Window*> m_head; // the list of each half-edge
   std::vector<std::uint8_t> m_queued, m_pending;
   std::vector<int> m_pending_lists;
   std::vector<int> m_fifo;
@@ -704,6 +705,8 @@ private:
   List_task m_task_one;
   std::vector<List_task> m_tasks;
   Window_pool m_pool;
+  std::size_t m_main_slot = 0; // the pool slot of the thread running run()
+  std::size_t m_peak_windows = 0;
   std::vector<Source_point> m_sources;
   std::vector<int> m_stop_vertices;
   std::size_t m_stops_taken = 0;

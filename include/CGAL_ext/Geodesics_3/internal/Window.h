@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <vector>
 
 namespace CGAL_ext {
@@ -23,7 +24,7 @@ struct Window
   double b0, b1;
   double sx, sy;
   double sigma;
-  std::int32_t next; // next window of the same list, -1 at the end
+  Window* next; // next window of the same list
 };
 
 /// Planar length of (x, y). std::hypot guards against overflow at a large cost; coordinates of
@@ -257,43 +258,89 @@ inline void child_edges(const Mesh_cache& m, int h, Child_edge& to_ac, Child_edg
   to_cb = Child_edge{f.apex_x, f.apex_y, (f.length - f.apex_x) / l_cb, -f.apex_y / l_cb, l_cb};
 }
 
-/// A pool of windows addressed by index, recycling freed slots: no allocation per window once
-/// the pool has grown to the size of the wavefront.
+/// Windows linked through `next`, with their last one and their number.
+struct Window_chain
+{
+  Window* head = nullptr;
+  Window* tail = nullptr;
+  std::size_t size = 0;
+
+  void clear() { head = tail = nullptr, size = 0; }
+  void push_back(Window* w)
+  {
+    w->next = nullptr;
+    (tail ? tail->next : head) = w;
+    tail = w;
+    ++size;
+  }
+};
+
+/// Storage of windows: no allocation per window once the pool has grown to the size of the
+/// wavefront, and no sharing between threads. Each thread uses its own slot: blocks it carved
+/// and a list of freed windows (a window freed by another thread than the one that made it
+/// simply joins that thread's list). Windows never move, so they are linked by pointer.
 class Window_pool
 {
 public:
-  std::int32_t allocate(const Window& w)
+  static constexpr std::size_t block_size = 4096;
+
+  /// Sets the number of slots (threads); only before any window is allocated.
+  void set_number_of_slots(std::size_t n) { m_slots.resize(std::max<std::size_t>(n, 1)); }
+  std::size_t number_of_slots() const { return m_slots.size(); }
+
+  Window* allocate(std::size_t slot, const Window& w)
   {
-    std::int32_t i;
-    if(m_free >= 0) {
-      i = m_free;
-      m_free = m_windows[i].next;
-      m_windows[i] = w;
-    } else {
-      i = static_cast<std::int32_t>(m_windows.size());
-      m_windows.push_back(w);
+    Slot& s = m_slots[slot];
+    Window* p = s.free;
+    if(p)
+      s.free = p->next;
+    else {
+      if(s.used == block_size) {
+        s.blocks.emplace_back(new Window[block_size]);
+        s.used = 0;
+      }
+      p = &s.blocks.back()[s.used++];
     }
-    ++m_live;
-    m_peak = std::max(m_peak, m_live);
-    return i;
+    *p = w;
+    ++s.live;
+    return p;
   }
-  void release(std::int32_t i)
+  void release_chain(std::size_t slot, Window* w)
   {
-    m_windows[i].next = m_free;
-    m_free = i;
-    --m_live;
+    Slot& s = m_slots[slot];
+    while(w) {
+      Window* next = w->next;
+      w->next = s.free;
+      s.free = w;
+      --s.live;
+      w = next;
+    }
   }
-  Window& operator[](std::int32_t i) { return m_windows[i]; }
-  const Window& operator[](std::int32_t i) const { return m_windows[i]; }
-  std::size_t live() const { return m_live; }
-  std::size_t peak() const { return m_peak; }
-  std::size_t capacity_bytes() const { return m_windows.capacity() * sizeof(Window); }
+  /// Windows alive (exact between parallel steps).
+  std::size_t live() const
+  {
+    std::ptrdiff_t n = 0;
+    for(const Slot& s : m_slots)
+      n += s.live;
+    return std::size_t(n);
+  }
+  std::size_t bytes() const
+  {
+    std::size_t blocks = 0;
+    for(const Slot& s : m_slots)
+      blocks += s.blocks.size();
+    return blocks * block_size * sizeof(Window);
+  }
 
 private:
-  std::vector<Window> m_windows;
-  std::int32_t m_free = -1;
-  std::size_t m_live = 0;
-  std::size_t m_peak = 0;
+  struct alignas(64) Slot
+  {
+    Window* free = nullptr;
+    std::vector<std::unique_ptr<Window[]>> blocks;
+    std::size_t used = block_size;
+    std::ptrdiff_t live = 0; // may go below zero in one slot: windows are freed where they are used
+  };
+  std::vector<Slot> m_slots = std::vector<Slot>(1);
 };
 
 } // namespace internal
