@@ -124,7 +124,7 @@ struct Vtp_options
   bool parallel = false;
   bool approximate = false;
   int threads = 0;
-  std::size_t batch_size = CGAL_ext::Geodesics_3::internal::VTP_solver::default_batch_size;
+  std::size_t batch_size = CGAL_ext::default_batch_size;
   double lambda = 0;
 };
 

@@ -61,7 +61,7 @@ DEFAULT_LAMBDA_MESHES = ["bunny00@2", "armadillo@3"]
 DEFAULT_HEAT_MESHES = DEFAULT_TABLE41_MESHES
 QUICK_SECTION_MESHES = {"table41": ["elephant", "fandisk"], "lambda": ["elephant"],
                         "heat_vs_avtp": ["elephant", "fandisk"]}
-# The library's default batch size (VTP_solver::default_batch_size): sequential AVTP uses it, so
+# The library's default batch size (CGAL_ext::default_batch_size): sequential AVTP uses it, so
 # PAVTP gives AVTP's distances bit for bit only with this batch size.
 LIBRARY_BATCH_SIZE = 512
 DEFAULT_LAMBDAS = [0.5, 1, 2, 4, 8, 16, 32, 64, 128]

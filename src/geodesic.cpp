@@ -155,7 +155,7 @@ struct Solver_choice
   const Algorithm* algorithm = &algorithms[0];
   double lambda = default_lambda; // approximate solvers only
   int threads = 0;                // parallel solvers only; 0: TBB's default
-  std::size_t batch_size = CGAL_ext::Geodesics_3::internal::VTP_solver::default_batch_size;
+  std::size_t batch_size = CGAL_ext::default_batch_size;
   double max_distance = infinity;
 };
 
@@ -191,8 +191,8 @@ Solver_choice solver_choice(const Distances_options& options)
     choice.threads = *options.threads;
   }
   if(options.batch_size) {
-    if(!found->parallel)
-      throw Tool_error("--batch-size applies to pvtp and pavtp only");
+    if(!found->parallel && !found->approximate)
+      throw Tool_error("--batch-size applies to pvtp, avtp and pavtp only");
     if(*options.batch_size < 1)
       throw invalid("--batch-size", "a positive integer", *options.batch_size);
     choice.batch_size = static_cast<std::size_t>(*options.batch_size);
@@ -475,11 +475,11 @@ template <class LibrarySources>
 void solve(const Mesh& mesh, Distance_map distance, const LibrarySources& sources, const Solver_choice& choice,
            CGAL_ext::Geodesic_statistics& stats)
 {
-  const auto np = CGAL_ext::parameters::max_distance(choice.max_distance).statistics(stats);
+  const auto np =
+    CGAL_ext::parameters::max_distance(choice.max_distance).statistics(stats).batch_size(choice.batch_size);
   if(choice.algorithm->parallel) {
     const Thread_allowance allowance(choice.threads);
-    solve_with<Parallel_tag>(mesh, distance, sources, choice,
-                             np.number_of_threads(choice.threads).batch_size(choice.batch_size));
+    solve_with<Parallel_tag>(mesh, distance, sources, choice, np.number_of_threads(choice.threads));
   } else {
     solve_with<CGAL::Sequential_tag>(mesh, distance, sources, choice, np);
   }
@@ -659,8 +659,9 @@ void add_distances_command(CLI::App& app, Distances_options& options)
   cmd->add_option("--threads", options.threads,
                   "pvtp and pavtp: number of threads, at least 1; default: all cores");
   cmd->add_option("--batch-size", options.batch_size,
-                  "pvtp and pavtp: window lists propagated together, at least 1; default: " +
-                    std::to_string(CGAL_ext::Geodesics_3::internal::VTP_solver::default_batch_size));
+                  "pvtp, avtp and pavtp: window lists propagated together, at least 1 (avtp and pavtp "
+                  "give the same distances for the same batch size); default: " +
+                    std::to_string(CGAL_ext::default_batch_size));
   cmd->add_option("--max-distance", options.max_distance,
                   "Stop the propagation at this distance; farther vertices get inf");
   cmd->add_option("--output", options.output,

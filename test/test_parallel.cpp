@@ -173,20 +173,21 @@ TEST_P(Parallel_on_mesh, approximation_error_is_bounded_and_shrinks_with_lambda)
   }
 }
 
-// PAVTP is AVTP on threads: bit-identical results for every thread count.
+// PAVTP is AVTP on threads: bit-identical results for every thread count, for the same batch size.
 TEST_P(Parallel_on_mesh, pavtp_equals_avtp_for_every_thread_count)
 {
   const Mesh& m = test_mesh(GetParam());
   for(const Source_set& s : source_sets(m))
-    for(double lambda : {0.5, 8.}) {
-      const std::vector<double> sequential = solve_set(m, s, approximation(lambda));
-      for(int threads : {1, 2, 4}) {
-        const std::vector<double> parallel =
-          solve_set<CGAL::Parallel_tag>(m, s, approximation(lambda).number_of_threads(threads));
-        EXPECT_EQ(max_difference(parallel, sequential), 0.) << s.name << ", lambda " << lambda << ", " << threads
-                                                            << " threads";
+    for(double lambda : {0.5, 8.})
+      for(std::size_t k : {std::size_t(16), CGAL_ext::default_batch_size}) {
+        const std::vector<double> sequential = solve_set(m, s, approximation(lambda).batch_size(k));
+        for(int threads : {1, 2, 4}) {
+          const std::vector<double> parallel =
+            solve_set<CGAL::Parallel_tag>(m, s, approximation(lambda).number_of_threads(threads).batch_size(k));
+          EXPECT_EQ(max_difference(parallel, sequential), 0.)
+            << s.name << ", lambda " << lambda << ", batch " << k << ", " << threads << " threads";
+        }
       }
-    }
 }
 
 INSTANTIATE_TEST_SUITE_P(Meshes, Parallel_on_mesh,
@@ -235,6 +236,7 @@ TEST(Parallel, bad_parameters_throw)
     expect_error([&] { solve(m, source, approximation(lambda)); }, "lambda");
   expect_error([&] { solve<CGAL::Parallel_tag>(m, source, number_of_threads(-1)); }, "threads");
   expect_error([&] { solve<CGAL::Parallel_tag>(m, source, batch_size(0)); }, "batch size");
+  expect_error([&] { solve(m, source, approximation(8.).batch_size(0)); }, "batch size");
 }
 
 } // namespace

@@ -640,7 +640,7 @@ const Bad_case bad_cases[] = {
   {"threads_with_avtp", E + " --source 0 --algorithm avtp --threads 2", "d.ply", "--threads applies to"},
   {"batch_size_zero", E + " --source 0 --algorithm pvtp --batch-size 0", "d.txt", "--batch-size must be a positive integer"},
   {"batch_size_negative", E + " --source 0 --algorithm pvtp --batch-size=-5", "d.txt", "got -5"},
-  {"batch_size_with_vtp", E + " --source 0 --batch-size 8", "d.txt", "--batch-size applies to pvtp and pavtp only"},
+  {"batch_size_with_vtp", E + " --source 0 --batch-size 8", "d.txt", "--batch-size applies to pvtp, avtp and pavtp only"},
 };
 
 class Bad_input : public Tool, public ::testing::WithParamInterface<Bad_case>

@@ -37,6 +37,11 @@ enum Geodesic_algorithm
   VTP
 };
 
+/// \ingroup PkgGeodesics3Ref
+/// The default of the named parameter `batch_size`: how many window lists the batched solvers
+/// (parallel or approximate) propagate together at most.
+constexpr std::size_t default_batch_size = 512;
+
 namespace Geodesics_3 {
 namespace internal {
 
@@ -134,10 +139,11 @@ std::vector<Source_point> to_source_points(const TriangleMesh& tm, VIM vim, FIM 
 ///     \cgalParamDefault{`0`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{batch_size}
-///     \cgalParamDescription{with `CGAL::Parallel_tag`: vertices are taken until this many window lists are
-///                           scheduled, and the scheduled lists are propagated together}
+///     \cgalParamDescription{with `CGAL::Parallel_tag` or `approximation`: vertices are taken until this many
+///                           window lists are scheduled, and the scheduled lists are propagated together; AVTP and
+///                           PAVTP with the same batch size give the same distances}
 ///     \cgalParamType{`std::size_t`, positive}
-///     \cgalParamDefault{`512`}
+///     \cgalParamDefault{`CGAL_ext::default_batch_size` (512)}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{max_distance}
 ///     \cgalParamDescription{the propagation stops beyond this distance; farther vertices get `+infinity`}
@@ -213,11 +219,12 @@ void geodesic_distances(const TriangleMesh& tm, VertexDistanceMap vertex_distanc
   const long threads = static_cast<long>(choose_parameter(get_parameter(np, internal_np::number_of_threads), 0));
   if(threads < 0)
     throw Geodesic_error("number of threads must be non-negative, got " + std::to_string(threads));
-  if constexpr(parallel) {
-    solver.set_parallel(static_cast<std::size_t>(
-      choose_parameter(get_parameter(np, internal_np::batch_size),
-                       Geodesics_3::internal::VTP_solver::default_batch_size)));
-  }
+  const auto batch = choose_parameter(get_parameter(np, internal_np::batch_size), default_batch_size);
+  if(!(batch > 0))
+    throw Geodesic_error("batch size must be positive, got " + std::to_string(batch));
+  solver.set_batch_size(static_cast<std::size_t>(batch));
+  if constexpr(parallel)
+    solver.set_parallel();
   if constexpr(!std::is_same<decltype(get_parameter(np, internal_np::stop_vertices)),
                              CGAL::internal_np::Param_not_found>::value) {
     for(vertex_descriptor v : get_parameter(np, internal_np::stop_vertices))

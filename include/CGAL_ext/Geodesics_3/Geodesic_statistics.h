@@ -20,9 +20,10 @@ struct Geodesic_statistics
   std::size_t wavefront_resets = 0;  ///< approximation only: times the wavefront was reset
   double seconds_setup = 0;          ///< building the mesh cache and checking the input
   double seconds_solve = 0;          ///< the propagation alone
-  double seconds_selection = 0;      ///< parallel or approximate: taking vertices, resetting the wavefront
-  double seconds_propagation = 0;    ///< parallel only: the parallel propagation of window lists
-  double seconds_merge = 0;          ///< parallel only: distance updates and list merges
+  // The phases of the batched solvers (parallel, or approximate): 0 for sequential exact VTP.
+  double seconds_selection = 0;      ///< batched: taking vertices, resetting the wavefront
+  double seconds_propagation = 0;    ///< batched: propagating the window lists of each batch
+  double seconds_merge = 0;          ///< batched: distance updates and list merges
 };
 
 } // namespace CGAL_ext

@@ -138,8 +138,6 @@ public:
 
   static double infinity() { return std::numeric_limits<double>::infinity(); }
 
-  /// The number of window lists propagated together by default in parallel.
-  static constexpr std::size_t default_batch_size = 512;
   /// The guard band of the approximation, in mean edge lengths (thesis 4.3.2, lambda_g).
   static constexpr double approximation_guard = 8.;
 
@@ -167,8 +165,11 @@ public:
   /// windows are dropped and its vertices become sources carrying their distances.
   void set_approximation(double lambda)
   {
-    if(!(lambda > 0) || !std::isfinite(lambda))
-      throw Geodesic_error("approximation lambda must be positive and finite, got " + std::to_string(lambda));
+    if(!(lambda > 0) || !std::isfinite(lambda)) {
+      std::ostringstream msg;
+      msg << "approximation lambda must be positive and finite, got " << lambda;
+      throw Geodesic_error(msg.str());
+    }
     m_reset_step = lambda * m_mesh.mean_edge_length;
     // What a reset keeps depends on the order in which lists were propagated: the approximation
     // always takes vertices in batches from buckets, so that run sequentially or on any number
@@ -176,18 +177,23 @@ public:
     m_batched = true;
   }
 
-  /// PVTP: vertices are taken from buckets until `batch_size` lists are scheduled, and the
+  /// PVTP: vertices are taken from buckets until the batch size of lists are scheduled, and the
   /// scheduled lists are propagated in parallel. The caller runs `run()` inside the
   /// `tbb::task_arena` that bounds the number of threads.
-  void set_parallel(std::size_t batch_size)
+  void set_parallel()
   {
-    if(batch_size == 0)
-      throw Geodesic_error("batch size must be positive");
 #ifndef CGAL_LINKED_WITH_TBB
     throw Geodesic_error("parallel propagation needs TBB (CGAL_LINKED_WITH_TBB is not defined)");
 #endif
     m_parallel = true;
     m_batched = true;
+  }
+
+  /// How many lists the batched solvers (parallel or approximate) propagate together at most.
+  void set_batch_size(std::size_t batch_size)
+  {
+    if(batch_size == 0)
+      throw Geodesic_error("batch size must be positive");
     m_batch_size = batch_size;
   }
 
@@ -719,7 +725,7 @@ private:
   bool m_force = false;
   bool m_parallel = false; // propagate batches on TBB threads
   bool m_batched = false;  // take vertices from buckets, propagate lists in batches
-  std::size_t m_batch_size = default_batch_size;
+  std::size_t m_batch_size = 512;
   Geodesic_statistics m_statistics;
   char m_handoff = 0, m_handback = 0; // tokens for ThreadSanitizer (Thread_sanitizer.h)
 };
