@@ -173,6 +173,43 @@ TEST_P(Parallel_on_mesh, approximation_error_is_bounded_and_shrinks_with_lambda)
   }
 }
 
+// The options of the exact solver work with the approximation too: several and face-point
+// sources (in source_sets), a max distance, stop vertices.
+TEST_P(Parallel_on_mesh, approximation_honours_max_distance_and_stop_vertices)
+{
+  const Mesh& m = test_mesh(GetParam());
+  const double tolerance = 1e-12 * bbox_diagonal(m);
+  for(const Source_set& s : source_sets(m)) {
+    const std::vector<double> exact = solve_set(m, s);
+    const std::vector<double> approx = solve_set(m, s, approximation(4.));
+    double farthest = 0;
+    for(double d : exact)
+      if(std::isfinite(d))
+        farthest = std::max(farthest, d);
+    const double radius = 0.5 * farthest;
+    for(int threads : {1, 2}) {
+      const std::vector<double> limited =
+        solve_set<CGAL::Parallel_tag>(m, s, approximation(4.).max_distance(radius).number_of_threads(threads));
+      for(std::size_t i = 0; i < exact.size(); ++i) {
+        if(std::isinf(limited[i]))
+          EXPECT_GT(approx[i], radius - tolerance) << s.name << ", vertex " << i;
+        else {
+          EXPECT_LE(limited[i], radius) << s.name << ", vertex " << i;
+          EXPECT_GE(limited[i], exact[i] - tolerance) << s.name << ", vertex " << i;
+        }
+        if(exact[i] < 0.7 * radius)
+          EXPECT_TRUE(std::isfinite(limited[i])) << s.name << ", vertex " << i << " at " << exact[i];
+      }
+    }
+    const std::vector<Vertex> stops = {Vertex(m.number_of_vertices() / 3), Vertex(m.number_of_vertices() - 2)};
+    const std::vector<double> stopped = solve_set(m, s, approximation(4.).stop_vertices(stops));
+    for(Vertex v : stops) {
+      EXPECT_TRUE(std::isfinite(stopped[v.idx()])) << s.name << ", stop vertex " << v;
+      EXPECT_GE(stopped[v.idx()], exact[v.idx()] - tolerance) << s.name << ", stop vertex " << v;
+    }
+  }
+}
+
 // PAVTP is AVTP on threads: bit-identical results for every thread count, for the same batch size.
 TEST_P(Parallel_on_mesh, pavtp_equals_avtp_for_every_thread_count)
 {

@@ -114,6 +114,19 @@ inline Mesh::Property_map<Vertex, Point_2> developed_map(const Mesh& m)
   return found.first;
 }
 
+/// Two triangles for the quad (a, b, c, d), split along a-c or, if not `first_diagonal`, b-d
+/// (alternating the diagonal avoids a preferred direction in the tests' meshes).
+inline void add_quad(std::vector<Triangle>& triangles, int a, int b, int c, int d, bool first_diagonal)
+{
+  if(first_diagonal) {
+    triangles.push_back({a, b, c});
+    triangles.push_back({a, c, d});
+  } else {
+    triangles.push_back({a, b, d});
+    triangles.push_back({b, c, d});
+  }
+}
+
 /// A planar (z = 0) grid of n x n points of spacing h, each cell cut along one of its diagonals,
 /// alternating like a checkerboard. Interior points are moved by up to `jitter` * h in x and y
 /// (border points stay, so the domain stays the square). With `l_shape`, the cells of the
@@ -146,15 +159,8 @@ inline Mesh make_grid(int n, double h, double jitter = 0, bool l_shape = false, 
     for(int i = 0; i + 1 < n; ++i) {
       if(l_shape && i >= half && j >= half)
         continue;
-      const int a = index[j * n + i], b = index[j * n + i + 1];
-      const int c = index[(j + 1) * n + i + 1], d = index[(j + 1) * n + i];
-      if((i + j) % 2 == 0) {
-        triangles.push_back({a, b, c});
-        triangles.push_back({a, c, d});
-      } else {
-        triangles.push_back({a, b, d});
-        triangles.push_back({b, c, d});
-      }
+      add_quad(triangles, index[j * n + i], index[j * n + i + 1], index[(j + 1) * n + i + 1],
+               index[(j + 1) * n + i], (i + j) % 2 == 0);
     }
   Mesh m = mesh_from_soup(points, triangles);
   auto dev = developed_map(m);
@@ -183,15 +189,8 @@ inline Mesh make_cylinder(double r, int segments, double height, int rows)
   for(int j = 0; j < rows; ++j)
     for(int k = 0; k < segments; ++k) {
       const int k1 = (k + 1) % segments;
-      const int a = j * segments + k, b = j * segments + k1;
-      const int c = (j + 1) * segments + k1, d = (j + 1) * segments + k;
-      if((j + k) % 2 == 0) {
-        triangles.push_back({a, b, c});
-        triangles.push_back({a, c, d});
-      } else {
-        triangles.push_back({a, b, d});
-        triangles.push_back({b, c, d});
-      }
+      add_quad(triangles, j * segments + k, j * segments + k1, (j + 1) * segments + k1,
+               (j + 1) * segments + k, (j + k) % 2 == 0);
     }
   Mesh m = mesh_from_soup(points, triangles);
   auto dev = developed_map(m);
