@@ -495,10 +495,18 @@ private:
     else
       m_heap.for_each(mark);
     // Windows wait only on lists outside the swept region; a list goes when both its end
-    // vertices are within the band.
-    for(int h : m_pending_lists)
-      if(m_distance[m_mesh.source(h)] <= guard && m_distance[m_mesh.target(h)] <= guard)
+    // vertices are within the band. Lists that were emptied or swept since they were recorded
+    // are forgotten here, so that each reset costs the size of the wavefront, not of its history.
+    std::size_t kept = 0;
+    for(int h : m_pending_lists) {
+      if(m_head[h] && m_distance[m_mesh.source(h)] <= guard && m_distance[m_mesh.target(h)] <= guard)
         clear_list(h);
+      if(m_head[h] && !inside_swept_region(h))
+        m_pending_lists[kept++] = h;
+      else
+        m_pending[h] = 0;
+    }
+    m_pending_lists.resize(kept);
     m_next_reset = r + m_reset_step;
     ++m_statistics.wavefront_resets;
     m_statistics.seconds_selection += seconds_since(start);
