@@ -697,6 +697,14 @@ def section_mesh(runs, spec, warnings):
         return None
 
 
+def usable_meshes(specs, runs, warnings):
+    """(spec, mesh) for each mesh of `specs` that could be made and is not over the size limit."""
+    for spec in specs:
+        m = section_mesh(runs, spec, warnings)
+        if m is not None and not m["skipped"]:
+            yield spec, m
+
+
 def run_cell(r, key, spec=".3g"):
     if r is None:
         return "—"
@@ -775,12 +783,7 @@ def table41_section(specs, runs, args, warnings):
     t_max = max(threads)
     lambdas = args.table41_lambdas
     rows = []
-    for spec in specs:
-        m = section_mesh(runs, spec, warnings)
-        if m is None:
-            continue
-        if m["skipped"]:
-            continue
+    for spec, m in usable_meshes(specs, runs, warnings):
         label = m["label"]
         row = {"mesh": label, "spec": spec, "vertices": m["vertices"]}
         row["vtp"] = runs.run(spec, "vtp")
@@ -888,12 +891,7 @@ LAMBDA_CSV_FIELDS = ["mesh", "spec", "vertices", "lambda", "seconds_total", "sec
 def lambda_section(specs, runs, args, warnings):
     """Error and time of AVTP against lambda (thesis figure 4.11)."""
     rows = []
-    for spec in specs:
-        m = section_mesh(runs, spec, warnings)
-        if m is None:
-            continue
-        if m["skipped"]:
-            continue
+    for spec, m in usable_meshes(specs, runs, warnings):
         vtp = runs.run(spec, "vtp")
         previous = None
         for l in args.lambdas:
@@ -1018,12 +1016,7 @@ def find_lambda(spec, target, runs, args):
 def heat_section(specs, runs, args, warnings):
     """AVTP against the heat method at equal mean error (thesis Table 4.3)."""
     rows = []
-    for spec in specs:
-        m = section_mesh(runs, spec, warnings)
-        if m is None:
-            continue
-        if m["skipped"]:
-            continue
+    for spec, m in usable_meshes(specs, runs, warnings):
         vtp = runs.run(spec, "vtp")
         for method in ("heat_direct", "heat_idt"):
             heat = runs.run(spec, method)
