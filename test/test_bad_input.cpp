@@ -110,6 +110,29 @@ TEST(BadInput, SourceVertexOutOfRange)
                                     {"source vertex 36", "out of range"}));
 }
 
+// The caller's index maps must give each element its own index in range.
+TEST(BadInput, IndexMapsOutOfRangeOrRepeated)
+{
+  const Mesh m = small_grid();
+  auto vertex_index = get(CGAL::dynamic_vertex_property_t<std::size_t>(), m);
+  for(Vertex v : m.vertices())
+    put(vertex_index, v, std::size_t(v.idx()));
+  put(vertex_index, Vertex(5), std::size_t(4)); // vertices 4 and 5 share an index
+  EXPECT_TRUE(throws_geodesic_error(
+    [&] { solve(m, Vertex(0), CGAL_ext::parameters::vertex_index_map(vertex_index)); },
+    {"vertex index map", "4", "two elements"}));
+  put(vertex_index, Vertex(5), std::size_t(36)); // one past the end
+  EXPECT_TRUE(throws_geodesic_error(
+    [&] { solve(m, Vertex(0), CGAL_ext::parameters::vertex_index_map(vertex_index)); },
+    {"vertex index map", "36", "out of range"}));
+  auto face_index = get(CGAL::dynamic_face_property_t<std::size_t>(), m);
+  for(Face f : m.faces())
+    put(face_index, f, std::size_t(f.idx()) + 1); // every face one too far: the last is out of range
+  EXPECT_TRUE(throws_geodesic_error(
+    [&] { solve(m, Vertex(0), CGAL_ext::parameters::face_index_map(face_index)); },
+    {"face index map", "50", "out of range"}));
+}
+
 TEST(BadInput, SourceFaceOutOfRange)
 {
   const Mesh m = small_grid();

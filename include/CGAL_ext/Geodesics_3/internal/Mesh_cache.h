@@ -202,9 +202,20 @@ void build_mesh_cache(const TriangleMesh& tm, VertexPointMap vpm, VertexIndexMap
   cache.number_of_vertices = nv;
   cache.number_of_faces = nf;
   cache.position.assign(nv, {0., 0., 0.});
+  // Indices come from the caller's maps: each must be in range and used once.
+  auto checked_index = [](auto index, std::size_t n, std::vector<std::uint8_t>& seen, const char* what) {
+    const long long i = static_cast<long long>(index);
+    if(i < 0 || std::size_t(i) >= n || seen[std::size_t(i)])
+      throw Geodesic_error(std::string(what) + " index map gives " + std::to_string(i) + ", " +
+                           (i < 0 || std::size_t(i) >= n ? "out of range [0, " + std::to_string(n) + ")"
+                                                         : std::string("to two elements")));
+    seen[std::size_t(i)] = 1;
+    return std::size_t(i);
+  };
+  std::vector<std::uint8_t> seen(nv, 0);
   for(auto v : vertices(tm)) {
     const auto& p = get(vpm, v);
-    const std::size_t i = static_cast<std::size_t>(get(vim, v));
+    const std::size_t i = checked_index(get(vim, v), nv, seen, "vertex");
     const double x = CGAL::to_double(p.x()), y = CGAL::to_double(p.y()), z = CGAL::to_double(p.z());
     if(!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z)) {
       std::ostringstream msg;
@@ -217,8 +228,9 @@ void build_mesh_cache(const TriangleMesh& tm, VertexPointMap vpm, VertexIndexMap
   auto local_index = get(CGAL::dynamic_halfedge_property_t<int>(), tm);
   cache.corner_vertex.assign(3 * nf, -1);
   cache.opposite_halfedge.assign(3 * nf, -1);
+  seen.assign(nf, 0);
   for(auto f : faces(tm)) {
-    const std::size_t fi = static_cast<std::size_t>(get(fim, f));
+    const std::size_t fi = checked_index(get(fim, f), nf, seen, "face");
     int k = 0;
     for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, tm), tm)) {
       if(k < 3) {

@@ -129,7 +129,7 @@ public:
     , m_head(mesh.number_of_halfedges(), nullptr)
     , m_queued(mesh.number_of_halfedges(), 0)
     , m_pending(mesh.number_of_halfedges(), 0)
-    , m_buckets(mesh.mean_edge_length / std::max(1., mesh.mean_anisotropy))
+    , m_buckets(mesh.mean_edge_length / std::min(std::max(1., mesh.mean_anisotropy), max_anisotropy))
   {
     m_min_window_length = 1e-10 * mesh.mean_edge_length;
     for(std::size_t v = 0; v < mesh.number_of_vertices; ++v)
@@ -140,6 +140,8 @@ public:
 
   /// The guard band of the approximation, in mean edge lengths (thesis 4.3.2, lambda_g).
   static constexpr double approximation_guard = 8.;
+  /// Buckets are h / tau wide (thesis 4.2.2); a few slivers must not make them vanishingly thin.
+  static constexpr double max_anisotropy = 4.;
 
   void add_source(const Source_point& s) { m_sources.push_back(normalized_source(m_mesh, s)); }
 
@@ -309,9 +311,10 @@ private:
       const double barrier = m_reset_step > 0 ? std::min(limit(), m_next_reset) : limit();
       bool took_any = false;
       double lowest_waiting = infinity();
-      // One bucket a round at most: its vertices lie in a band about one edge wide, close enough
-      // to the true order that taking them together costs few extra windows.
-      for(bool first = true; first && m_fifo.size() < m_batch_size && lowest_waiting == infinity(); first = false) {
+      // One bucket a round that gives a vertex: its vertices lie in a band about one edge wide,
+      // close enough to the true order that taking them together costs few extra windows. A
+      // bucket of stale entries only does not count.
+      while(!took_any && m_fifo.size() < m_batch_size && lowest_waiting == infinity()) {
         m_buckets.pop_lowest(bucket);
         if(bucket.empty())
           break;

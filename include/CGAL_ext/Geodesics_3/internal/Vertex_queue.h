@@ -85,7 +85,7 @@ public:
   }
 
 private:
-  static constexpr std::size_t max_buckets = std::size_t(1) << 22;
+  static constexpr std::size_t max_buckets = std::size_t(1) << 20;
   double m_width;
   std::vector<std::vector<Vertex_entry>> m_buckets;
   std::size_t m_first = 0;

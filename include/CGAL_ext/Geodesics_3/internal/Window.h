@@ -59,15 +59,19 @@ inline bool trim_by_edge_vertices(Window& w, double length, double d_from, doubl
     // sigma + |s - x| = d_from + x
     const double k = d_from - w.sigma;
     const double x = (r2 - k * k) / (2 * (k + w.sx));
-    w.b0 = std::min(std::max(x, w.b0), w.b1);
-    at_b0 = distance_at(w, w.b0);
+    if(std::isfinite(x)) { // not when the pseudo-source lies on the edge's line (0/0)
+      w.b0 = std::min(std::max(x, w.b0), w.b1);
+      at_b0 = distance_at(w, w.b0);
+    }
   }
   if(at_b1 + w.b1 > d_to + length) {
     // sigma + |s - x| = d_to + length - x
     const double m = d_to + length - w.sigma;
     const double x = (m * m - r2) / (2 * (m - w.sx));
-    w.b1 = std::max(std::min(x, w.b1), w.b0);
-    at_b1 = distance_at(w, w.b1);
+    if(std::isfinite(x)) {
+      w.b1 = std::max(std::min(x, w.b1), w.b0);
+      at_b1 = distance_at(w, w.b1);
+    }
   }
   key = (w.sx > w.b0 && w.sx < w.b1) ? w.sigma - w.sy : std::min(at_b0, at_b1);
   return w.b1 > w.b0;
@@ -98,7 +102,7 @@ inline double distance_to_apex(const Window& w, double crossing, double cx, doub
 /// returns how many (0 to 2). With delta = sigma0 - sigma1, D1 = D0 reads
 /// |x - s1| = |x - s0| + delta; squaring once gives alpha x + beta = 2 delta |x - s0|, and a
 /// second time a quadratic. A root of the quadratic is kept only if it solves the first
-/// equation too (alpha x + beta has the sign of delta): squaring adds spurious roots.
+/// equation too: squaring adds spurious roots.
 inline int equal_distance_points(const Window& w0, const Window& w1, double lo, double hi, double roots[2])
 {
   const double delta = w0.sigma - w1.sigma;
@@ -106,7 +110,9 @@ inline int equal_distance_points(const Window& w0, const Window& w1, double lo, 
   const double beta = w1.sx * w1.sx + w1.sy * w1.sy - w0.sx * w0.sx - w0.sy * w0.sy - delta * delta;
   int n = 0;
   auto keep = [&](double x) {
-    if(x > lo && x < hi && (alpha * x + beta) * delta >= 0)
+    // |x - s1| = |x - s0| + delta needs |x - s0| + delta >= 0, and then alpha x + beta has the
+    // sign of delta; both are checked (the pieces' winners are checked again at their midpoints)
+    if(x > lo && x < hi && (alpha * x + beta) * delta >= 0 && norm2d(x - w0.sx, w0.sy) + delta >= 0)
       roots[n++] = x;
   };
   if(delta == 0) {
