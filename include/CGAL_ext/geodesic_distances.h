@@ -101,7 +101,12 @@ std::vector<Source_point> to_source_points(const TriangleMesh& tm, VIM vim, FIM 
 /// `CGAL::Parallel_if_available_tag` is parallel when TBB is linked and sequential otherwise.
 ///
 /// Vertices that no source reaches (another connected component), and vertices beyond the
-/// `max_distance` or beyond the farthest `stop_vertices`, get `+infinity`.
+/// `max_distance` or beyond the farthest `stop_vertices`, get `+infinity`. A stop vertex that
+/// no source reaches never settles: the propagation then covers everything it can reach.
+///
+/// Saddle and border vertices act as pseudo-sources, and so do vertices whose angle sum is
+/// within 1e-6 of 2 pi (flat up to round-off): on meshes with large flat regions (CAD models)
+/// this costs windows, never accuracy.
 ///
 /// \tparam ConcurrencyTag `CGAL::Sequential_tag` (the default), `CGAL::Parallel_tag` or
 ///         `CGAL::Parallel_if_available_tag`
@@ -134,7 +139,8 @@ std::vector<Source_point> to_source_points(const TriangleMesh& tm, VIM vim, FIM 
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_threads}
 ///     \cgalParamDescription{with `CGAL::Parallel_tag`: the number of threads (in a `tbb::task_arena`), `0` for
-///                           as many as TBB chooses}
+///                           as many as TBB chooses; TBB itself caps it at the number of cores unless the
+///                           program raises the limit with a `tbb::global_control`; ignored when sequential}
 ///     \cgalParamType{`int`, non-negative}
 ///     \cgalParamDefault{`0`}
 ///   \cgalParamNEnd
