@@ -254,26 +254,10 @@ def read_dump(path, n):
 
 def compare_approx(exact, approx):
     """Mean relative error of `approx` against `exact` over vertices with a positive exact
-    distance; values that are non-finite or absurdly large are counted, not averaged."""
-    finite_exact = [e for e in exact if math.isfinite(e)]
-    bound = GARBAGE_FACTOR * max(finite_exact) if finite_exact else math.inf
-    total, count, worst, invalid, nonfinite = 0.0, 0, 0.0, 0, 0
-    for e, a in zip(exact, approx):
-        if not math.isfinite(e) or e <= EXACT_FLOOR:
-            continue
-        if not math.isfinite(a):
-            nonfinite += 1
-            invalid += 1
-            continue
-        if abs(a) > bound:
-            invalid += 1
-            continue
-        rel = abs(a - e) / e
-        total += rel
-        worst = max(worst, rel)
-        count += 1
-    return {"mean_rel_error": total / count if count else None, "max_rel_error": worst,
-            "compared": count, "invalid": invalid, "nonfinite": nonfinite}
+    distance; values that are non-finite or absurdly large are counted, not averaged (the
+    fields of compare_to_exact that need no diagonal)."""
+    c = compare_to_exact(exact, approx, None)
+    return {k: c[k] for k in ("mean_rel_error", "max_rel_error", "compared", "invalid", "nonfinite")}
 
 
 def compare_exact(exact, other, diagonal):
