@@ -8,6 +8,7 @@
 #include <CGAL_ext/Geodesics_3/Geodesic_error.h>
 #include <CGAL_ext/Geodesics_3/Geodesic_statistics.h>
 #include <CGAL_ext/Geodesics_3/Named_function_parameters.h>
+#include <CGAL_ext/Geodesics_3/internal/MMP_solver.h>
 #include <CGAL_ext/Geodesics_3/internal/Mesh_cache.h>
 #include <CGAL_ext/Geodesics_3/internal/VTP_solver.h>
 
@@ -33,14 +34,26 @@ namespace CGAL_ext {
 /// `algorithm`.
 enum Geodesic_algorithm
 {
-  /// exact vertex-oriented triangle propagation (thesis chapter 4.1), the default
-  VTP
+  /// exact vertex-oriented triangle propagation (thesis chapter 4.1), the default of
+  /// `geodesic_distances()`; with `CGAL::Parallel_tag`: PVTP
+  VTP,
+  /// exact window propagation with the windows kept on the edges, taken in exact order of
+  /// distance from a binary heap (Mitchell, Mount and Papadimitriou; thesis chapter 3)
+  MMP,
+  /// MMP with the windows taken bucket by bucket (fast wavefront propagation), the default of
+  /// `Surface_mesh_geodesic_paths`; with `CGAL::Parallel_tag`: PMMP
+  FWP_MMP
 };
 
 /// \ingroup PkgGeodesics3Ref
 /// The default of the named parameter `batch_size`: how many window lists the batched solvers
 /// (parallel or approximate) propagate together at most.
 constexpr std::size_t default_batch_size = 512;
+
+/// \ingroup PkgGeodesics3Ref
+/// The default of the named parameter `batch_size` for PMMP: how many windows are selected and
+/// propagated together at most (the thesis's K; its running time stops changing beyond 1000).
+constexpr std::size_t default_window_batch_size = 1024;
 
 namespace Geodesics_3 {
 namespace internal {
@@ -85,6 +98,28 @@ std::vector<Source_point> to_source_points(const TriangleMesh& tm, VIM vim, FIM 
     points.push_back(to_source_point(tm, vim, fim, sources));
   }
   return points;
+}
+
+// Runs a solver, in a task arena of `threads` threads (0: TBB's choice) when parallel: the
+// arena bounds the threads of this call only, never a process-wide setting.
+template <bool parallel, class Solver>
+void run_solver(Solver& solver, int threads)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  if constexpr(parallel) {
+    tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
+    sanitizer_release(&solver);
+    arena.execute([&] {
+      sanitizer_acquire(&solver);
+      solver.run();
+      sanitizer_release(&solver);
+    });
+    sanitizer_acquire(&solver);
+    return;
+  }
+#endif
+  (void)threads;
+  solver.run();
 }
 
 } // namespace internal
@@ -209,59 +244,75 @@ void geodesic_distances(const TriangleMesh& tm, VertexDistanceMap vertex_distanc
   const auto fim = CGAL::get_initialized_face_index_map(tm, np);
   const Geodesic_algorithm algorithm =
     choose_parameter(get_parameter(np, CGAL::internal_np::algorithm), VTP);
-  if(algorithm != VTP)
+  if(algorithm != VTP && algorithm != MMP && algorithm != FWP_MMP)
     throw Geodesic_error("unknown geodesic algorithm " + std::to_string(int(algorithm)));
-
-  Geodesics_3::internal::Mesh_cache cache;
-  Geodesics_3::internal::build_mesh_cache(tm, vpm, vim, fim, cache);
-  Geodesics_3::internal::VTP_solver solver(cache);
-  for(const auto& s : Geodesics_3::internal::to_source_points(tm, vim, fim, sources))
-    solver.add_source(s);
-  solver.set_max_distance(choose_parameter(get_parameter(np, internal_np::max_distance),
-                                           Geodesics_3::internal::VTP_solver::infinity()));
-  if constexpr(!std::is_same<decltype(get_parameter(np, internal_np::approximation)),
-                             CGAL::internal_np::Param_not_found>::value)
-    solver.set_approximation(double(get_parameter(np, internal_np::approximation)));
+  constexpr bool has_approximation = !std::is_same<decltype(get_parameter(np, internal_np::approximation)),
+                                                   CGAL::internal_np::Param_not_found>::value;
+  constexpr bool has_stop_vertices = !std::is_same<decltype(get_parameter(np, internal_np::stop_vertices)),
+                                                   CGAL::internal_np::Param_not_found>::value;
   const long threads = static_cast<long>(choose_parameter(get_parameter(np, internal_np::number_of_threads), 0));
   if(threads < 0)
     throw Geodesic_error("number of threads must be non-negative, got " + std::to_string(threads));
+  const double max_distance = choose_parameter(get_parameter(np, internal_np::max_distance),
+                                               Geodesics_3::internal::VTP_solver::infinity());
+
+  Geodesics_3::internal::Mesh_cache cache;
+  Geodesics_3::internal::build_mesh_cache(tm, vpm, vim, fim, cache);
+  const auto sources_in_cache = Geodesics_3::internal::to_source_points(tm, vim, fim, sources);
+  auto finish = [&](const auto& solver, double seconds_setup) {
+    const std::vector<double>& d = solver.distances();
+    for(vertex_descriptor v : vertices(tm))
+      put(vertex_distance_map, v, d[get(vim, v)]);
+    Geodesic_statistics* stats = choose_parameter(get_parameter(np, internal_np::statistics),
+                                                  static_cast<Geodesic_statistics*>(nullptr));
+    if(stats) {
+      *stats = solver.statistics();
+      stats->seconds_setup = seconds_setup;
+    }
+  };
+
+  if(algorithm != VTP) {
+    if(has_approximation)
+      throw Geodesic_error("approximation works with the VTP algorithm only");
+    if(has_stop_vertices)
+      throw Geodesic_error("stop_vertices works with the VTP algorithm only");
+    Geodesics_3::internal::MMP_solver solver(cache);
+    for(const auto& s : sources_in_cache)
+      solver.add_source(s);
+    solver.set_max_distance(max_distance);
+    solver.set_queue(algorithm == MMP ? Geodesics_3::internal::MMP_solver::BINARY_HEAP
+                                      : Geodesics_3::internal::MMP_solver::BUCKETS);
+    const auto batch = choose_parameter(get_parameter(np, internal_np::batch_size), default_window_batch_size);
+    if(!(batch > 0))
+      throw Geodesic_error("batch size must be positive, got " + std::to_string(batch));
+    solver.set_batch_size(static_cast<std::size_t>(batch));
+    if constexpr(parallel)
+      solver.set_parallel();
+    const double seconds_setup = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    Geodesics_3::internal::run_solver<parallel>(solver, int(threads));
+    finish(solver, seconds_setup);
+    return;
+  }
+
+  Geodesics_3::internal::VTP_solver solver(cache);
+  for(const auto& s : sources_in_cache)
+    solver.add_source(s);
+  solver.set_max_distance(max_distance);
+  if constexpr(has_approximation)
+    solver.set_approximation(double(get_parameter(np, internal_np::approximation)));
   const auto batch = choose_parameter(get_parameter(np, internal_np::batch_size), default_batch_size);
   if(!(batch > 0))
     throw Geodesic_error("batch size must be positive, got " + std::to_string(batch));
   solver.set_batch_size(static_cast<std::size_t>(batch));
   if constexpr(parallel)
     solver.set_parallel();
-  if constexpr(!std::is_same<decltype(get_parameter(np, internal_np::stop_vertices)),
-                             CGAL::internal_np::Param_not_found>::value) {
+  if constexpr(has_stop_vertices) {
     for(vertex_descriptor v : get_parameter(np, internal_np::stop_vertices))
       solver.add_stop_vertex(static_cast<int>(get(vim, v)));
   }
   const double seconds_setup = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-#ifdef CGAL_LINKED_WITH_TBB
-  if constexpr(parallel) {
-    // The arena bounds the threads of this call only (never a process-wide setting).
-    tbb::task_arena arena(threads > 0 ? int(threads) : tbb::task_arena::automatic);
-    Geodesics_3::internal::sanitizer_release(&solver);
-    arena.execute([&] {
-      Geodesics_3::internal::sanitizer_acquire(&solver);
-      solver.run();
-      Geodesics_3::internal::sanitizer_release(&solver);
-    });
-    Geodesics_3::internal::sanitizer_acquire(&solver);
-  } else
-#endif
-    solver.run();
-
-  const std::vector<double>& d = solver.distances();
-  for(vertex_descriptor v : vertices(tm))
-    put(vertex_distance_map, v, d[get(vim, v)]);
-
-  Geodesic_statistics* stats = choose_parameter(get_parameter(np, internal_np::statistics),
-                                                static_cast<Geodesic_statistics*>(nullptr));
-  if(stats) {
-    *stats = solver.statistics();
-    stats->seconds_setup = seconds_setup;
-  }
+  Geodesics_3::internal::run_solver<parallel>(solver, int(threads));
+  finish(solver, seconds_setup);
 }
 
 } // namespace CGAL_ext

@@ -18,12 +18,20 @@ struct Geodesic_statistics
   std::size_t vertices_popped = 0;   ///< vertices taken from the priority queue (with repeats)
   std::size_t lists_propagated = 0;  ///< window lists propagated across a triangle
   std::size_t wavefront_resets = 0;  ///< approximation only: times the wavefront was reset
+  std::size_t windows_propagated = 0; ///< MMP family: windows taken from the queue and propagated
+  std::size_t windows_stored = 0;    ///< MMP family: windows kept on the edges for queries after the build
+  std::size_t stored_window_bytes = 0; ///< MMP family: memory of the kept windows and the edge lists
   double seconds_setup = 0;          ///< building the mesh cache and checking the input
   double seconds_solve = 0;          ///< the propagation alone
   // The phases of the batched solvers (parallel, or approximate): 0 for sequential exact VTP.
-  double seconds_selection = 0;      ///< batched: taking vertices, resetting the wavefront
-  double seconds_propagation = 0;    ///< batched: propagating the window lists of each batch
+  double seconds_selection = 0;      ///< batched: taking vertices, resetting the wavefront; PMMP: taking windows
+  double seconds_propagation = 0;    ///< batched: propagating the window lists (PMMP: the windows) of each batch
   double seconds_merge = 0;          ///< batched: distance updates and list merges
+  // The phases of the MMP family (thesis figure 3.16); sequential MMP and FWP-MMP clip each
+  // window as it is made, so their propagation includes clipping.
+  double seconds_organization = 0;   ///< PMMP: filing the new windows by edge
+  double seconds_clipping = 0;       ///< MMP family: clipping new windows against the stored ones
+  double seconds_pushing = 0;        ///< PMMP: queue and vertex updates after clipping
 };
 
 } // namespace CGAL_ext

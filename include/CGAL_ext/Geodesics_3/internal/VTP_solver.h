@@ -5,6 +5,7 @@
 #include <CGAL_ext/Geodesics_3/Geodesic_error.h>
 #include <CGAL_ext/Geodesics_3/Geodesic_statistics.h>
 #include <CGAL_ext/Geodesics_3/internal/Mesh_cache.h>
+#include <CGAL_ext/Geodesics_3/internal/Sources.h>
 #include <CGAL_ext/Geodesics_3/internal/Thread_sanitizer.h>
 #include <CGAL_ext/Geodesics_3/internal/Vertex_queue.h>
 #include <CGAL_ext/Geodesics_3/internal/Window.h>
@@ -30,55 +31,6 @@
 namespace CGAL_ext {
 namespace Geodesics_3 {
 namespace internal {
-
-/// A source in the cache's indices: a vertex, or a point of a face given by barycentric
-/// coordinates in the order of the face's corners.
-struct Source_point
-{
-  int vertex = -1;
-  int face = -1;
-  std::array<double, 3> barycentric{{0., 0., 0.}};
-};
-
-/// Checks a face-point source and turns one that sits on a corner into a vertex source.
-inline Source_point normalized_source(const Mesh_cache& m, Source_point s)
-{
-  if(s.vertex >= 0) {
-    if(std::size_t(s.vertex) >= m.number_of_vertices)
-      throw Geodesic_error("source vertex " + std::to_string(s.vertex) + " is out of range (the mesh has " +
-                           std::to_string(m.number_of_vertices) + " vertices)");
-    return s;
-  }
-  if(s.face < 0 || std::size_t(s.face) >= m.number_of_faces)
-    throw Geodesic_error("source face " + std::to_string(s.face) + " is out of range (the mesh has " +
-                         std::to_string(m.number_of_faces) + " faces)");
-  const auto& b = s.barycentric;
-  const double sum = b[0] + b[1] + b[2];
-  if(!std::isfinite(sum) || std::abs(sum - 1.) > 1e-9 || b[0] < -1e-12 || b[1] < -1e-12 || b[2] < -1e-12) {
-    std::ostringstream msg;
-    msg.precision(17);
-    msg << "barycentric coordinates (" << b[0] << ", " << b[1] << ", " << b[2] << ") of the source in face "
-        << s.face << " must be non-negative and sum to 1";
-    throw Geodesic_error(msg.str());
-  }
-  // Snap coordinates that are zero up to round-off, so that a point on an edge is treated as such.
-  std::array<double, 3> snapped = b;
-  double snapped_sum = 0;
-  for(double& c : snapped) {
-    if(c < 1e-12)
-      c = 0;
-    snapped_sum += c;
-  }
-  for(int k = 0; k < 3; ++k) {
-    s.barycentric[k] = snapped[k] / snapped_sum;
-    if(s.barycentric[k] >= 1.) {
-      Source_point v;
-      v.vertex = m.source(3 * s.face + k);
-      return v;
-    }
-  }
-  return s;
-}
 
 /// One window list taken across its triangle: the work of one task of the propagation step.
 /// `propagate()` fills it reading only shared state that no task writes; `merge()` applies it.
@@ -393,68 +345,15 @@ private:
     const double sigma = m_distance[v];
     m_emitted[v] = sigma;
     m_limit_cache = limit();
-    m_mesh.for_each_outgoing(v, [&](int h) {
-      relax(m_mesh.target(h), sigma + m_mesh.frame[h].length);
-      const int across = Mesh_cache::next(h); // the edge opposite v in this face
-      relax(m_mesh.target(across), sigma + m_mesh.frame[Mesh_cache::prev(h)].length);
-      const int g = m_mesh.opposite(across);
-      if(g < 0)
-        return;
-      const Halfedge_frame& f = m_mesh.frame[across];
-      Window w;
-      w.b0 = 0;
-      w.b1 = f.length;
-      w.sx = f.length - f.apex_x; // g runs the other way along the same edge
-      w.sy = -f.apex_y;
-      w.sigma = sigma;
-      insert_window(g, w);
-    });
+    emit_vertex_windows(
+      m_mesh, v, sigma, [&](int u, double d) { relax(u, d); }, [&](int g, const Window& w) { insert_window(g, w); });
   }
 
-  // A source inside a face (or on an edge of it): windows on the face's edges that do not
-  // contain it, in this face and, for a point on an edge, in the face across that edge.
   void emit_from_face_point(const Source_point& s)
   {
     m_limit_cache = limit();
-    const auto& b = s.barycentric;
-    emit_in_face(s.face, b);
-    for(int k = 0; k < 3; ++k) {
-      if(b[(k + 2) % 3] > 0)
-        continue;
-      // The point lies on half-edge 3f+k: express it in the face across.
-      const int h = 3 * s.face + k;
-      const int o = m_mesh.opposite(h);
-      if(o < 0)
-        continue;
-      std::array<double, 3> bo{{0., 0., 0.}};
-      bo[o % 3] = b[(k + 1) % 3]; // o starts where h ends
-      bo[Mesh_cache::next(o) % 3] = b[k];
-      emit_in_face(Mesh_cache::face(o), bo);
-    }
-  }
-
-  void emit_in_face(int face, const std::array<double, 3>& b)
-  {
-    for(int k = 0; k < 3; ++k) {
-      const int h = 3 * face + k;
-      const Halfedge_frame& f = m_mesh.frame[h];
-      // The point in the frame of h: corner k at 0, corner k+1 at (length, 0), corner k+2 at the apex.
-      const double x = b[(k + 1) % 3] * f.length + b[(k + 2) % 3] * f.apex_x;
-      const double y = b[(k + 2) % 3] * f.apex_y;
-      relax(m_mesh.source(h), norm2d(x, y)); // distance to corner k, the origin of this frame
-      if(b[(k + 2) % 3] <= 0)
-        continue; // the point lies on this edge
-      const int g = m_mesh.opposite(h);
-      if(g < 0)
-        continue;
-      Window w;
-      w.b0 = 0;
-      w.b1 = f.length;
-      w.sx = f.length - x;
-      w.sy = -y;
-      w.sigma = 0;
-      insert_window(g, w);
-    }
+    emit_face_point_windows(
+      m_mesh, s, [&](int u, double d) { relax(u, d); }, [&](int g, const Window& w) { insert_window(g, w); });
   }
 
   void take_vertex(int v)

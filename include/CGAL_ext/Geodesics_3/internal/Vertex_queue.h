@@ -17,42 +17,52 @@ namespace internal {
 /// distance is no longer the vertex's distance is stale and skipped (lazy deletion).
 typedef std::pair<double, int> Vertex_entry;
 
-/// Exact order: a binary min-heap (sequential VTP takes vertices one at a time).
-class Vertex_heap
+/// Exact order: a binary min-heap of (distance, payload) entries, ties broken by the payload's
+/// `operator<` (sequential VTP takes vertices one at a time, sequential MMP windows).
+template <class Payload>
+class Min_heap
 {
 public:
-  void push(double d, int v)
+  typedef std::pair<double, Payload> Entry;
+
+  void push(double d, const Payload& p)
   {
-    m_heap.emplace_back(d, v);
-    std::push_heap(m_heap.begin(), m_heap.end(), std::greater<Vertex_entry>());
+    m_heap.emplace_back(d, p);
+    std::push_heap(m_heap.begin(), m_heap.end(), std::greater<Entry>());
   }
   bool empty() const { return m_heap.empty(); }
-  const Vertex_entry& top() const { return m_heap.front(); }
+  std::size_t size() const { return m_heap.size(); }
+  const Entry& top() const { return m_heap.front(); }
   void pop()
   {
-    std::pop_heap(m_heap.begin(), m_heap.end(), std::greater<Vertex_entry>());
+    std::pop_heap(m_heap.begin(), m_heap.end(), std::greater<Entry>());
     m_heap.pop_back();
   }
   template <class Function>
   void for_each(Function f) const
   {
-    for(const Vertex_entry& e : m_heap)
+    for(const Entry& e : m_heap)
       f(e);
   }
 
 private:
-  std::vector<Vertex_entry> m_heap;
+  std::vector<Entry> m_heap;
 };
 
-/// Approximate order in O(1): bucket i holds the entries with distance in [i w, (i+1) w)
-/// (thesis 4.2.2, w = h / tau), in no particular order inside a bucket. The buckets grow on
-/// demand. Parallel VTP takes whole buckets at a time.
-class Vertex_buckets
+typedef Min_heap<int> Vertex_heap;
+
+/// Approximate order in O(1): bucket i holds the (distance, payload) entries with distance in
+/// [i w, (i+1) w) (thesis 4.2.2, w = h / tau), in no particular order inside a bucket. The
+/// buckets grow on demand. The batched solvers take whole buckets at a time.
+template <class Payload>
+class Bucket_queue
 {
 public:
-  explicit Vertex_buckets(double width = 1.) : m_width(width) {}
+  typedef std::pair<double, Payload> Entry;
 
-  void push(double d, int v)
+  explicit Bucket_queue(double width = 1.) : m_width(width) {}
+
+  void push(double d, const Payload& v)
   {
     // Far beyond any wavefront the order hardly matters; cap the number of buckets.
     const double index = std::min(std::floor(d / m_width), double(max_buckets));
@@ -64,9 +74,10 @@ public:
     ++m_size;
   }
   bool empty() const { return m_size == 0; }
+  std::size_t size() const { return m_size; }
 
   /// Moves the entries of the lowest non-empty bucket to `out` (which is cleared first).
-  void pop_lowest(std::vector<Vertex_entry>& out)
+  void pop_lowest(std::vector<Entry>& out)
   {
     out.clear();
     while(m_first < m_buckets.size() && m_buckets[m_first].empty())
@@ -80,17 +91,19 @@ public:
   void for_each(Function f) const
   {
     for(std::size_t i = m_first; i < m_buckets.size(); ++i)
-      for(const Vertex_entry& e : m_buckets[i])
+      for(const Entry& e : m_buckets[i])
         f(e);
   }
 
 private:
   static constexpr std::size_t max_buckets = std::size_t(1) << 20;
   double m_width;
-  std::vector<std::vector<Vertex_entry>> m_buckets;
+  std::vector<std::vector<Entry>> m_buckets;
   std::size_t m_first = 0;
   std::size_t m_size = 0;
 };
+
+typedef Bucket_queue<int> Vertex_buckets;
 
 } // namespace internal
 } // namespace Geodesics_3

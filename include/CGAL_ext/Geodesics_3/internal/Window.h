@@ -143,6 +143,40 @@ inline int equal_distance_points(const Window& w0, const Window& w1, double lo, 
   return n;
 }
 
+/// Compares two windows of the same edge on their overlap [lo, hi]: splits it at the points
+/// where they give equal distances into `n - 1` pieces (1 to 3), [cut[i], cut[i+1]], and tells
+/// which window is shorter on each (`winner[i]`: 0 for w0, 1 for w1). Returns n.
+inline int compare_on_overlap(const Window& w0, const Window& w1, double lo, double hi, double cut[4], int winner[3])
+{
+  // A distance is convex along the edge: its largest value on the overlap is at an end. When
+  // one window's largest value is no more than the other's smallest, no equation is solved.
+  const double lo0 = distance_at(w0, lo), hi0 = distance_at(w0, hi);
+  const double lo1 = distance_at(w1, lo), hi1 = distance_at(w1, hi);
+  auto smallest = [&](const Window& w, double d_lo, double d_hi) {
+    return (w.sx > lo && w.sx < hi) ? w.sigma - w.sy : std::min(d_lo, d_hi);
+  };
+  cut[0] = lo;
+  if(std::max(lo0, hi0) <= smallest(w1, lo1, hi1)) {
+    cut[1] = hi;
+    winner[0] = 0;
+    return 2;
+  }
+  if(std::max(lo1, hi1) < smallest(w0, lo0, hi0)) {
+    cut[1] = hi;
+    winner[0] = 1;
+    return 2;
+  }
+  int n = 1 + equal_distance_points(w0, w1, lo, hi, cut + 1);
+  cut[n++] = hi;
+  // Winner of each piece between consecutive cut points. On a tie w0 wins: two different
+  // straight paths of equal length meeting on the edge cannot both continue as shortest paths.
+  for(int i = 0; i + 1 < n; ++i) {
+    const double x = 0.5 * (cut[i] + cut[i + 1]);
+    winner[i] = distance_at(w1, x) < distance_at(w0, x) ? 1 : 0;
+  }
+  return n;
+}
+
 /// Clips two windows of the same edge against each other where they overlap: a window loses the
 /// part of the overlap where the other one is strictly shorter, when that part is at an end of
 /// its interval (a loss strictly inside its interval would split it, and is left alone).
@@ -152,38 +186,9 @@ inline int clip_pair(Window& w0, Window& w1)
   const double lo = std::max(w0.b0, w1.b0), hi = std::min(w0.b1, w1.b1);
   if(!(hi > lo))
     return 0;
-  // A distance is convex along the edge: its largest value on the overlap is at an end. When
-  // one window's largest value is no more than the other's smallest, no equation is solved.
-  const double lo0 = distance_at(w0, lo), hi0 = distance_at(w0, hi);
-  const double lo1 = distance_at(w1, lo), hi1 = distance_at(w1, hi);
-  auto smallest = [&](const Window& w, double d_lo, double d_hi) {
-    return (w.sx > lo && w.sx < hi) ? w.sigma - w.sy : std::min(d_lo, d_hi);
-  };
   double cut[4];
   int winner[3];
-  int n;
-  if(std::max(lo0, hi0) <= smallest(w1, lo1, hi1)) {
-    cut[1] = hi;
-    winner[0] = 0;
-    n = 2;
-  } else if(std::max(lo1, hi1) < smallest(w0, lo0, hi0)) {
-    cut[1] = hi;
-    winner[0] = 1;
-    n = 2;
-  } else {
-    n = 0;
-  }
-  cut[0] = lo;
-  if(n == 0) {
-    n = 1 + equal_distance_points(w0, w1, lo, hi, cut + 1);
-    cut[n++] = hi;
-    // Winner of each piece between consecutive cut points. On a tie w0 wins: two different
-    // straight paths of equal length meeting on the edge cannot both continue as shortest paths.
-    for(int i = 0; i + 1 < n; ++i) {
-      const double x = 0.5 * (cut[i] + cut[i + 1]);
-      winner[i] = distance_at(w1, x) < distance_at(w0, x) ? 1 : 0;
-    }
-  }
+  const int n = compare_on_overlap(w0, w1, lo, hi, cut, winner);
   // A window gives up the pieces the other one wins, from each end of the overlap that is an
   // end of its own interval, inwards. Returns true if nothing is left of it.
   auto trim = [&](Window& w, int other) {
@@ -281,11 +286,13 @@ struct Window_chain
   }
 };
 
-/// Storage of windows: no allocation per window once the pool has grown to the size of the
-/// wavefront, and no sharing between threads. Each thread uses its own slot: blocks it carved
-/// and a list of freed windows (a window freed by another thread than the one that made it
-/// simply joins that thread's list). Windows never move, so they are linked by pointer.
-class Window_pool
+/// Storage of windows (any type with a `next` pointer to its own type): no allocation per
+/// window once the pool has grown to the size of the wavefront, and no sharing between threads.
+/// Each thread uses its own slot: blocks it carved and a list of freed windows (a window freed
+/// by another thread than the one that made it simply joins that thread's list). Windows never
+/// move, so they are linked by pointer.
+template <class T>
+class Object_pool
 {
 public:
   static constexpr std::size_t block_size = 4096;
@@ -294,33 +301,46 @@ public:
   void set_number_of_slots(std::size_t n) { m_slots.resize(std::max<std::size_t>(n, 1)); }
   std::size_t number_of_slots() const { return m_slots.size(); }
 
-  Window* allocate(std::size_t slot, const Window& w)
+  /// An object of the slot, as it was left when freed (value-initialized when new).
+  T* allocate(std::size_t slot)
   {
     Slot& s = m_slots[slot];
-    Window* p = s.free;
+    T* p = s.free;
     if(p)
       s.free = p->next;
     else {
       if(s.used == block_size) {
-        s.blocks.emplace_back(new Window[block_size]);
+        s.blocks.emplace_back(new T[block_size]());
         s.used = 0;
       }
       p = &s.blocks.back()[s.used++];
     }
-    *p = w;
     ++s.live;
     return p;
   }
-  void release_chain(std::size_t slot, Window* w)
+  T* allocate(std::size_t slot, const T& w)
+  {
+    T* p = allocate(slot);
+    *p = w;
+    return p;
+  }
+  /// Frees `w` and the objects linked after it.
+  void release_chain(std::size_t slot, T* w)
   {
     Slot& s = m_slots[slot];
     while(w) {
-      Window* next = w->next;
+      T* next = w->next;
       w->next = s.free;
       s.free = w;
       --s.live;
       w = next;
     }
+  }
+  /// Frees `w` alone.
+  void release(std::size_t slot, T* w)
+  {
+    w->next = nullptr;
+    release_chain(slot, w);
   }
   /// Windows alive (exact between parallel steps).
   std::size_t live() const
@@ -335,19 +355,21 @@ public:
     std::size_t blocks = 0;
     for(const Slot& s : m_slots)
       blocks += s.blocks.size();
-    return blocks * block_size * sizeof(Window);
+    return blocks * block_size * sizeof(T);
   }
 
 private:
   struct alignas(64) Slot
   {
-    Window* free = nullptr;
-    std::vector<std::unique_ptr<Window[]>> blocks;
+    T* free = nullptr;
+    std::vector<std::unique_ptr<T[]>> blocks;
     std::size_t used = block_size;
     std::ptrdiff_t live = 0; // may go below zero in one slot: windows are freed where they are used
   };
   std::vector<Slot> m_slots = std::vector<Slot>(1);
 };
+
+typedef Object_pool<Window> Window_pool;
 
 } // namespace internal
 } // namespace Geodesics_3

@@ -1,0 +1,348 @@
+// Copyright (c) 2026 The CGAL_ext geodesics developers.
+#ifndef CGAL_EXT_GEODESICS_3_INTERNAL_GEODESIC_PATH_TRACER_H
+#define CGAL_EXT_GEODESICS_3_INTERNAL_GEODESIC_PATH_TRACER_H
+
+#include <CGAL_ext/Geodesics_3/Geodesic_error.h>
+#include <CGAL_ext/Geodesics_3/internal/MMP_solver.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace CGAL_ext {
+namespace Geodesics_3 {
+namespace internal {
+
+/// A point of the surface in the cache's indices: a vertex, a point of an edge
+/// ((1 - t) source(h) + t target(h), 0 < t < 1), or a point inside a face (barycentric
+/// coordinates in the order of the face's corners).
+struct Surface_location
+{
+  enum Kind
+  {
+    VERTEX,
+    EDGE,
+    FACE
+  };
+  Kind kind = VERTEX;
+  int vertex = -1;
+  int halfedge = -1;
+  double t = 0;
+  int face = -1;
+  std::array<double, 3> barycentric{{0., 0., 0.}};
+
+  static Surface_location at_vertex(int v)
+  {
+    Surface_location p;
+    p.kind = VERTEX;
+    p.vertex = v;
+    return p;
+  }
+};
+
+/// Distances at any surface point and shortest paths back to the nearest source, read from the
+/// windows an `MMP_solver` kept on the edges. Every member is const and reads only what the
+/// solver no longer writes, so that any number of threads may query at once.
+///
+/// A point p of a face is reached (a) through an edge of the face, by a window entering the face
+/// whose ray to p crosses the window's interval, (b) through a corner u, at d(u) + |p - u|, or
+/// (c) straight from a source inside the face. The shortest of these is p's distance; a path is
+/// traced back by moving to where the best one comes from (the crossing on the edge, the corner
+/// or the source) and repeating, from an edge point through the faces on both sides of the edge
+/// and from a vertex through the faces around it.
+class Geodesic_path_tracer
+{
+public:
+  explicit Geodesic_path_tracer(const MMP_solver& solver) : m_solver(solver), m_mesh(solver.mesh())
+  {
+    const std::vector<Source_point>& sources = solver.sources();
+    for(std::size_t i = 0; i < sources.size(); ++i) {
+      if(sources[i].vertex >= 0)
+        continue;
+      for_each_face_seeing(m_mesh, sources[i], [&](int face, const std::array<double, 3>& b) {
+        m_face_sources.push_back(Face_source{face, int(i), b});
+      });
+    }
+    // by face, then by source index: the first of equal sources is found first
+    std::stable_sort(m_face_sources.begin(), m_face_sources.end(),
+                     [](const Face_source& a, const Face_source& b) { return a.face < b.face; });
+  }
+
+  /// Checks a target given by a face and barycentric coordinates, and makes it a vertex or
+  /// an edge point when it lies on one.
+  Surface_location locate(int face, std::array<double, 3> b) const
+  {
+    if(face < 0 || std::size_t(face) >= m_mesh.number_of_faces)
+      throw Geodesic_error("target face " + std::to_string(face) + " is out of range (the mesh has " +
+                           std::to_string(m_mesh.number_of_faces) + " faces)");
+    const double sum = b[0] + b[1] + b[2];
+    if(!std::isfinite(sum) || std::abs(sum - 1.) > 1e-9 || b[0] < -1e-12 || b[1] < -1e-12 || b[2] < -1e-12) {
+      std::ostringstream msg;
+      msg.precision(17);
+      msg << "barycentric coordinates (" << b[0] << ", " << b[1] << ", " << b[2] << ") of the target in face " << face
+          << " must be non-negative and sum to 1";
+      throw Geodesic_error(msg.str());
+    }
+    int zeros = 0;
+    double total = 0;
+    for(double& c : b) {
+      if(c < snap)
+        c = 0, ++zeros;
+      total += c;
+    }
+    for(double& c : b)
+      c /= total;
+    Surface_location p;
+    if(zeros == 2) {
+      for(int k = 0; k < 3; ++k)
+        if(b[k] > 0)
+          return Surface_location::at_vertex(m_mesh.source(3 * face + k));
+    }
+    if(zeros == 1) {
+      for(int k = 0; k < 3; ++k)
+        if(b[(k + 2) % 3] == 0) { // on half-edge 3f+k
+          p.kind = Surface_location::EDGE;
+          p.halfedge = 3 * face + k;
+          p.t = b[(k + 1) % 3];
+          return p;
+        }
+    }
+    p.kind = Surface_location::FACE;
+    p.face = face;
+    p.barycentric = b;
+    return p;
+  }
+
+  Surface_location locate_vertex(int v) const
+  {
+    if(v < 0 || std::size_t(v) >= m_mesh.number_of_vertices)
+      throw Geodesic_error("target vertex " + std::to_string(v) + " is out of range (the mesh has " +
+                           std::to_string(m_mesh.number_of_vertices) + " vertices)");
+    return Surface_location::at_vertex(v);
+  }
+
+  /// The distance from the nearest source to p (+infinity if none reaches it), and that source
+  /// (-1 if none).
+  double distance(const Surface_location& p, int& nearest_source) const
+  {
+    if(p.kind == Surface_location::VERTEX) {
+      nearest_source = m_solver.nearest_sources()[p.vertex];
+      return m_solver.distances()[p.vertex];
+    }
+    const Candidate c = best_way_to(p);
+    nearest_source = c.source;
+    return within_limit(c.distance) ? c.distance : infinity();
+  }
+
+  /// The shortest path from p back to its nearest source, p first; false (and an empty path)
+  /// when no source reaches p.
+  bool trace(const Surface_location& target, std::vector<Surface_location>& path) const
+  {
+    path.clear();
+    int source;
+    if(!(distance(target, source) < infinity()))
+      return false;
+    path.push_back(target);
+    Surface_location p = target;
+    const std::size_t max_steps = 4 * (m_mesh.number_of_faces + m_mesh.number_of_vertices) + 16;
+    for(std::size_t step = 0; step < max_steps; ++step) {
+      if(p.kind == Surface_location::VERTEX && m_solver.distances()[p.vertex] == 0)
+        return true; // a source vertex
+      const Candidate c = best_way_to(p);
+      if(!(c.distance < infinity()))
+        break;
+      if(c.kind == Candidate::SOURCE) {
+        Surface_location s;
+        s.kind = Surface_location::FACE;
+        s.face = c.face;
+        s.barycentric = m_face_sources[std::size_t(c.index)].barycentric;
+        path.push_back(s);
+        return true;
+      }
+      if(c.kind == Candidate::VERTEX)
+        p = Surface_location::at_vertex(c.index);
+      else
+        p = on_edge(c.index, c.x / m_mesh.frame[c.index].length);
+      path.push_back(p);
+    }
+    throw Geodesic_error("internal error: the shortest path from the target did not reach a source; please report it");
+  }
+
+  /// The position of a surface location.
+  std::array<double, 3> position(const Surface_location& p) const
+  {
+    auto corner = [&](int v) { return m_mesh.position[std::size_t(v)]; };
+    std::array<double, 3> x{{0., 0., 0.}};
+    if(p.kind == Surface_location::VERTEX)
+      return corner(p.vertex);
+    if(p.kind == Surface_location::EDGE) {
+      const auto a = corner(m_mesh.source(p.halfedge)), b = corner(m_mesh.target(p.halfedge));
+      for(int i = 0; i < 3; ++i)
+        x[i] = (1 - p.t) * a[i] + p.t * b[i];
+      return x;
+    }
+    for(int k = 0; k < 3; ++k) {
+      const auto c = corner(m_mesh.source(3 * p.face + k));
+      for(int i = 0; i < 3; ++i)
+        x[i] += p.barycentric[k] * c[i];
+    }
+    return x;
+  }
+
+private:
+  static double infinity() { return std::numeric_limits<double>::infinity(); }
+  // Barycentric coordinates and edge parameters below this are zero: the point is on the edge
+  // or at the vertex.
+  static constexpr double snap = 1e-12;
+
+  struct Face_source
+  {
+    int face;
+    int source;
+    std::array<double, 3> barycentric;
+  };
+
+  struct Candidate
+  {
+    enum Kind
+    {
+      NONE,
+      WINDOW,
+      VERTEX,
+      SOURCE
+    };
+    Kind kind = NONE;
+    double distance = std::numeric_limits<double>::infinity();
+    int index = -1;  // WINDOW: the half-edge crossed; VERTEX: the vertex; SOURCE: in m_face_sources
+    double x = 0;    // WINDOW: where, from the source of the half-edge
+    int face = -1;   // SOURCE: the face
+    int source = -1; // the source the path starts from
+  };
+
+  bool within_limit(double d) const { return d <= m_solver.max_distance(); }
+
+  Surface_location on_edge(int h, double t) const
+  {
+    if(t <= snap)
+      return Surface_location::at_vertex(m_mesh.source(h));
+    if(t >= 1 - snap)
+      return Surface_location::at_vertex(m_mesh.target(h));
+    Surface_location p;
+    p.kind = Surface_location::EDGE;
+    p.halfedge = h;
+    p.t = t;
+    return p;
+  }
+
+  // The best way to reach p, over the faces p belongs to.
+  Candidate best_way_to(const Surface_location& p) const
+  {
+    Candidate best;
+    if(p.kind == Surface_location::FACE) {
+      best_in_face(p.face, p.barycentric, best);
+    } else if(p.kind == Surface_location::EDGE) {
+      std::array<double, 3> b{{0., 0., 0.}};
+      b[p.halfedge % 3] = 1 - p.t;
+      b[Mesh_cache::next(p.halfedge) % 3] = p.t;
+      best_in_face(Mesh_cache::face(p.halfedge), b, best);
+      const int o = m_mesh.opposite(p.halfedge);
+      if(o >= 0) {
+        std::array<double, 3> bo{{0., 0., 0.}};
+        bo[o % 3] = p.t;
+        bo[Mesh_cache::next(o) % 3] = 1 - p.t;
+        best_in_face(Mesh_cache::face(o), bo, best);
+      }
+    } else {
+      m_mesh.for_each_outgoing(p.vertex, [&](int h) {
+        std::array<double, 3> b{{0., 0., 0.}};
+        b[h % 3] = 1;
+        best_in_face(Mesh_cache::face(h), b, best);
+      });
+    }
+    return best;
+  }
+
+  // Updates `best` with the ways to reach the point of barycentric coordinates b in face f that
+  // do not start where the point is (edges and corners it lies on are skipped). A corner wins
+  // only when strictly shorter than the other ways, so that ties of round-off never route a
+  // path through a vertex that it only grazes.
+  void best_in_face(int f, const std::array<double, 3>& b, Candidate& best) const
+  {
+    const Halfedge_frame& f0 = m_mesh.frame[3 * f];
+    // p in the frame of half-edge 3f
+    const double px = b[1] * f0.length + b[2] * f0.apex_x, py = b[2] * f0.apex_y;
+    Candidate vertex_way;
+    for(int k = 0; k < 3; ++k) {
+      if(b[k] >= 1 - snap)
+        continue; // p is this corner
+      const int u = m_mesh.source(3 * f + k);
+      const double du = m_solver.distances()[u];
+      if(!(du < infinity()))
+        continue;
+      const double cx = k == 0 ? 0. : (k == 1 ? f0.length : f0.apex_x), cy = k == 2 ? f0.apex_y : 0.;
+      const double d = du + norm2d(px - cx, py - cy);
+      if(d < vertex_way.distance) {
+        vertex_way.kind = Candidate::VERTEX;
+        vertex_way.distance = d;
+        vertex_way.index = u;
+        vertex_way.source = m_solver.nearest_sources()[u];
+      }
+    }
+    for(int k = 0; k < 3; ++k) {
+      if(b[(k + 2) % 3] <= snap)
+        continue; // p lies on this edge
+      const int h = 3 * f + k;
+      const Halfedge_frame& fr = m_mesh.frame[h];
+      const double qx = b[(k + 1) % 3] * fr.length + b[(k + 2) % 3] * fr.apex_x, qy = b[(k + 2) % 3] * fr.apex_y;
+      const double tolerance = 1e-9 * fr.length;
+      for(const Edge_window* ew = m_solver.windows_of_edge(h); ew; ew = ew->next) {
+        if(ew->halfedge != h)
+          continue; // enters the face on the other side
+        const Window w = m_solver.in_frame_of(*ew, h);
+        const double x = w.sx + (qx - w.sx) * (-w.sy) / (qy - w.sy); // where the ray to p crosses
+        if(!(x >= w.b0 - tolerance && x <= w.b1 + tolerance))
+          continue;
+        const double d = w.sigma + norm2d(qx - w.sx, qy - w.sy);
+        if(d < best.distance) {
+          best.kind = Candidate::WINDOW;
+          best.distance = d;
+          best.index = h;
+          best.x = std::min(std::max(x, w.b0), w.b1);
+          best.source = ew->source;
+        }
+      }
+    }
+    auto first = std::lower_bound(m_face_sources.begin(), m_face_sources.end(), f,
+                                  [](const Face_source& s, int face) { return s.face < face; });
+    for(auto it = first; it != m_face_sources.end() && it->face == f; ++it) {
+      const auto& s = it->barycentric;
+      const double sx = s[1] * f0.length + s[2] * f0.apex_x, sy = s[2] * f0.apex_y;
+      const double d = norm2d(px - sx, py - sy);
+      if(d < best.distance) {
+        best.kind = Candidate::SOURCE;
+        best.distance = d;
+        best.index = int(it - m_face_sources.begin());
+        best.face = f;
+        best.source = it->source;
+      }
+    }
+    if(vertex_way.distance < best.distance - 1e-12 * (best.distance + m_mesh.mean_edge_length))
+      best = vertex_way;
+    else if(best.kind == Candidate::NONE && vertex_way.kind != Candidate::NONE)
+      best = vertex_way;
+  }
+
+  const MMP_solver& m_solver;
+  const Mesh_cache& m_mesh;
+  std::vector<Face_source> m_face_sources; // sorted by face
+};
+
+} // namespace internal
+} // namespace Geodesics_3
+} // namespace CGAL_ext
+
+#endif // CGAL_EXT_GEODESICS_3_INTERNAL_GEODESIC_PATH_TRACER_H

@@ -1,0 +1,151 @@
+// Copyright (c) 2026 The CGAL_ext geodesics developers.
+#ifndef CGAL_EXT_GEODESICS_3_INTERNAL_SOURCES_H
+#define CGAL_EXT_GEODESICS_3_INTERNAL_SOURCES_H
+
+#include <CGAL_ext/Geodesics_3/Geodesic_error.h>
+#include <CGAL_ext/Geodesics_3/internal/Mesh_cache.h>
+#include <CGAL_ext/Geodesics_3/internal/Window.h>
+
+#include <array>
+#include <cmath>
+#include <sstream>
+#include <string>
+
+namespace CGAL_ext {
+namespace Geodesics_3 {
+namespace internal {
+
+/// A source in the cache's indices: a vertex, or a point of a face given by barycentric
+/// coordinates in the order of the face's corners.
+struct Source_point
+{
+  int vertex = -1;
+  int face = -1;
+  std::array<double, 3> barycentric{{0., 0., 0.}};
+};
+
+/// Checks a face-point source and turns one that sits on a corner into a vertex source.
+inline Source_point normalized_source(const Mesh_cache& m, Source_point s)
+{
+  if(s.vertex >= 0) {
+    if(std::size_t(s.vertex) >= m.number_of_vertices)
+      throw Geodesic_error("source vertex " + std::to_string(s.vertex) + " is out of range (the mesh has " +
+                           std::to_string(m.number_of_vertices) + " vertices)");
+    return s;
+  }
+  if(s.face < 0 || std::size_t(s.face) >= m.number_of_faces)
+    throw Geodesic_error("source face " + std::to_string(s.face) + " is out of range (the mesh has " +
+                         std::to_string(m.number_of_faces) + " faces)");
+  const auto& b = s.barycentric;
+  const double sum = b[0] + b[1] + b[2];
+  if(!std::isfinite(sum) || std::abs(sum - 1.) > 1e-9 || b[0] < -1e-12 || b[1] < -1e-12 || b[2] < -1e-12) {
+    std::ostringstream msg;
+    msg.precision(17);
+    msg << "barycentric coordinates (" << b[0] << ", " << b[1] << ", " << b[2] << ") of the source in face "
+        << s.face << " must be non-negative and sum to 1";
+    throw Geodesic_error(msg.str());
+  }
+  // Snap coordinates that are zero up to round-off, so that a point on an edge is treated as such.
+  std::array<double, 3> snapped = b;
+  double snapped_sum = 0;
+  for(double& c : snapped) {
+    if(c < 1e-12)
+      c = 0;
+    snapped_sum += c;
+  }
+  for(int k = 0; k < 3; ++k) {
+    s.barycentric[k] = snapped[k] / snapped_sum;
+    if(s.barycentric[k] >= 1.) {
+      Source_point v;
+      v.vertex = m.source(3 * s.face + k);
+      return v;
+    }
+  }
+  return s;
+}
+
+/// The start of the propagation from a (pseudo-)source at vertex v at distance `sigma`:
+/// `relax(u, d)` for each neighbour u along its edge, and `add(g, w)` for a whole-edge window w
+/// (in the frame of half-edge g) on each edge opposite v, entering the face beyond it.
+template <class Relax, class Add>
+void emit_vertex_windows(const Mesh_cache& m, int v, double sigma, Relax relax, Add add)
+{
+  m.for_each_outgoing(v, [&](int h) {
+    relax(m.target(h), sigma + m.frame[h].length);
+    const int across = Mesh_cache::next(h); // the edge opposite v in this face
+    relax(m.target(across), sigma + m.frame[Mesh_cache::prev(h)].length);
+    const int g = m.opposite(across);
+    if(g < 0)
+      return;
+    const Halfedge_frame& f = m.frame[across];
+    Window w;
+    w.b0 = 0;
+    w.b1 = f.length;
+    w.sx = f.length - f.apex_x; // g runs the other way along the same edge
+    w.sy = -f.apex_y;
+    w.sigma = sigma;
+    w.next = nullptr;
+    add(g, w);
+  });
+}
+
+/// Calls `f(face, barycentric)` for the face of a face-point source and, when the point lies on
+/// an edge, for the face across that edge, with the point's coordinates in that face.
+template <class Function>
+void for_each_face_seeing(const Mesh_cache& m, const Source_point& s, Function f)
+{
+  const auto& b = s.barycentric;
+  f(s.face, b);
+  for(int k = 0; k < 3; ++k) {
+    if(b[(k + 2) % 3] > 0)
+      continue;
+    // The point lies on half-edge 3f+k: express it in the face across.
+    const int h = 3 * s.face + k;
+    const int o = m.opposite(h);
+    if(o < 0)
+      continue;
+    std::array<double, 3> bo{{0., 0., 0.}};
+    bo[o % 3] = b[(k + 1) % 3]; // o starts where h ends
+    bo[Mesh_cache::next(o) % 3] = b[k];
+    f(Mesh_cache::face(o), bo);
+  }
+}
+
+/// The start of the propagation from a source inside a face (or on an edge of it): `relax(u, d)`
+/// for each corner u of the faces that see it directly, and `add(g, w)` for a window on each of
+/// their edges that do not contain it (in this face and, for a point on an edge, in the face
+/// across that edge).
+template <class Relax, class Add>
+void emit_face_point_windows(const Mesh_cache& m, const Source_point& s, Relax relax, Add add)
+{
+  auto emit_in_face = [&](int face, const std::array<double, 3>& b) {
+    for(int k = 0; k < 3; ++k) {
+      const int h = 3 * face + k;
+      const Halfedge_frame& f = m.frame[h];
+      // The point in the frame of h: corner k at 0, corner k+1 at (length, 0), corner k+2 at the apex.
+      const double x = b[(k + 1) % 3] * f.length + b[(k + 2) % 3] * f.apex_x;
+      const double y = b[(k + 2) % 3] * f.apex_y;
+      relax(m.source(h), norm2d(x, y)); // distance to corner k, the origin of this frame
+      if(b[(k + 2) % 3] <= 0)
+        continue; // the point lies on this edge
+      const int g = m.opposite(h);
+      if(g < 0)
+        continue;
+      Window w;
+      w.b0 = 0;
+      w.b1 = f.length;
+      w.sx = f.length - x;
+      w.sy = -y;
+      w.sigma = 0;
+      w.next = nullptr;
+      add(g, w);
+    }
+  };
+  for_each_face_seeing(m, s, emit_in_face);
+}
+
+} // namespace internal
+} // namespace Geodesics_3
+} // namespace CGAL_ext
+
+#endif // CGAL_EXT_GEODESICS_3_INTERNAL_SOURCES_H

@@ -1,0 +1,448 @@
+// Copyright (c) 2026 The CGAL_ext geodesics developers.
+#ifndef CGAL_EXT_SURFACE_MESH_GEODESIC_PATHS_H
+#define CGAL_EXT_SURFACE_MESH_GEODESIC_PATHS_H
+
+/// \file Surface_mesh_geodesic_paths.h
+/// Exact geodesic distances at any surface point and shortest paths, by MMP, FWP-MMP or PMMP.
+
+#include <CGAL_ext/geodesic_distances.h>
+#include <CGAL_ext/Geodesics_3/Geodesic_error.h>
+#include <CGAL_ext/Geodesics_3/Geodesic_statistics.h>
+#include <CGAL_ext/Geodesics_3/Named_function_parameters.h>
+#include <CGAL_ext/Geodesics_3/internal/Geodesic_path_tracer.h>
+#include <CGAL_ext/Geodesics_3/internal/MMP_solver.h>
+#include <CGAL_ext/Geodesics_3/internal/Mesh_cache.h>
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/boost/graph/properties.h>
+#include <CGAL/Kernel_traits.h>
+#include <CGAL/tags.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/task_arena.h>
+#endif
+
+#include <array>
+#include <chrono>
+#include <cstddef>
+#include <functional>
+#include <limits>
+#include <memory>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace CGAL_ext {
+
+/// \ingroup PkgGeodesics3Ref
+/// Exact geodesic distances from a set of sources to any point of a triangle mesh, the nearest
+/// source of any point, and shortest paths, computed once by `build()` and then queried.
+///
+/// `build()` propagates windows (bundles of straight paths unfolded across faces) and keeps
+/// them on the edges: with `CGAL_ext::MMP` in exact order of distance (Mitchell, Mount and
+/// Papadimitriou), with `CGAL_ext::FWP_MMP` (the default) bucket by bucket, and with
+/// `CGAL::Parallel_tag` as PMMP on TBB threads (thesis chapter 3). All three give the same
+/// distances up to round-off; PMMP gives the same for every number of threads.
+///
+/// After `build()` every query is `const` and may run on any number of threads at once.
+/// A point is a vertex or a face location: a face and barycentric coordinates in the order of the
+/// face's vertices, starting at `source(halfedge(f, tm), tm)`. Points that no source reaches
+/// (another connected component, or beyond `max_distance`) are at distance `+infinity` and have
+/// no path.
+///
+/// Paths run from the nearest source to the target; a path is a polyline on the surface whose
+/// segments each lie in one face (or along an edge), crossing edges at their interior or passing
+/// through vertices where a geodesic must (saddle and border vertices). Its length is the
+/// distance of the target.
+///
+/// \tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph` (for example
+///         `CGAL::Surface_mesh`), manifold, made of triangles
+/// \tparam ConcurrencyTag `CGAL::Sequential_tag` (the default), `CGAL::Parallel_tag` (PMMP,
+///         needs TBB) or `CGAL::Parallel_if_available_tag`
+/// \tparam VertexPointMap the vertex point map; its value type is the point type of paths
+template <class TriangleMesh, class ConcurrencyTag = CGAL::Sequential_tag,
+          class VertexPointMap = typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>
+class Surface_mesh_geodesic_paths
+{
+#ifndef CGAL_LINKED_WITH_TBB
+  static_assert(!std::is_same<ConcurrencyTag, CGAL::Parallel_tag>::value,
+                "CGAL_ext::Surface_mesh_geodesic_paths: CGAL::Parallel_tag needs TBB (CGAL_LINKED_WITH_TBB); "
+                "use CGAL::Sequential_tag or CGAL::Parallel_if_available_tag");
+#endif
+  typedef Geodesics_3::internal::Surface_location Location;
+
+public:
+  typedef boost::graph_traits<TriangleMesh> Graph_traits;
+  typedef typename Graph_traits::vertex_descriptor vertex_descriptor;
+  typedef typename Graph_traits::halfedge_descriptor halfedge_descriptor;
+  typedef typename Graph_traits::face_descriptor face_descriptor;
+  /// the point type of the vertex point map
+  typedef typename boost::property_traits<VertexPointMap>::value_type Point_3;
+  /// its kernel
+  typedef typename CGAL::Kernel_traits<Point_3>::Kernel Kernel;
+  /// its number type
+  typedef typename Kernel::FT FT;
+  /// barycentric coordinates in the order of the face's vertices, from `source(halfedge(f))`
+  typedef std::array<FT, 3> Barycentric_coordinates;
+  /// a point of a face
+  typedef std::pair<face_descriptor, Barycentric_coordinates> Face_location;
+
+  /// What `nearest_source()` returns for a point that no source reaches.
+  static constexpr std::size_t no_source = std::size_t(-1);
+
+  /// A point of a path: where it lies on the mesh, and its position.
+  struct Path_point
+  {
+    enum Kind
+    {
+      VERTEX, ///< at `vertex`
+      EDGE,   ///< on the edge of `halfedge`, at `(1 - t) source + t target`, `0 < t < 1`
+      FACE    ///< inside `face`, at `barycentric` (only a source or a target)
+    };
+    Kind kind;
+    vertex_descriptor vertex;             ///< when `kind == VERTEX`
+    halfedge_descriptor halfedge;         ///< when `kind == EDGE`
+    FT t;                                 ///< when `kind == EDGE`
+    face_descriptor face;                 ///< when `kind == FACE`
+    Barycentric_coordinates barycentric;  ///< when `kind == FACE`
+    Point_3 point;                        ///< the position
+  };
+
+  /// prepares queries on `tm`, which must stay alive and unchanged while this object is used;
+  /// checks the mesh.
+  ///
+  /// \cgalNamedParamsBegin
+  ///   \cgalParamNBegin{vertex_point_map}
+  ///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
+  ///     \cgalParamType{`VertexPointMap`}
+  ///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{vertex_index_map}
+  ///     \cgalParamDescription{a property map associating to each vertex of `tm` a unique index between `0` and `num_vertices(tm) - 1`}
+  ///     \cgalParamType{a model of `ReadablePropertyMap` with an integer value type}
+  ///     \cgalParamDefault{an automatically indexed internal map}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{face_index_map}
+  ///     \cgalParamDescription{a property map associating to each face of `tm` a unique index between `0` and `num_faces(tm) - 1`}
+  ///     \cgalParamType{a model of `ReadablePropertyMap` with an integer value type}
+  ///     \cgalParamDefault{an automatically indexed internal map}
+  ///   \cgalParamNEnd
+  /// \cgalNamedParamsEnd
+  ///
+  /// \throws Geodesic_error when `tm` is empty, not a manifold triangle mesh, has a non-finite
+  ///         coordinate or a degenerate triangle
+  template <class NamedParameters = parameters::Default_named_parameters_type>
+  explicit Surface_mesh_geodesic_paths(const TriangleMesh& tm, const NamedParameters& np = parameters::default_values())
+    : m_tm(tm)
+  {
+    using CGAL::parameters::choose_parameter;
+    using CGAL::parameters::get_parameter;
+    const auto start = std::chrono::steady_clock::now();
+    m_vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                             get_const_property_map(CGAL::vertex_point, tm));
+    const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
+    const auto fim = CGAL::get_initialized_face_index_map(tm, np);
+    Geodesics_3::internal::build_mesh_cache(tm, m_vpm, vim, fim, m_cache);
+    m_vertex_of_index.resize(m_cache.number_of_vertices);
+    m_face_of_index.resize(m_cache.number_of_faces);
+    m_halfedge_of_index.resize(m_cache.number_of_halfedges());
+    for(vertex_descriptor v : vertices(tm)) {
+      m_vertex_of_index[std::size_t(get(vim, v))] = v;
+    }
+    for(face_descriptor f : faces(tm)) {
+      const std::size_t i = std::size_t(get(fim, f));
+      m_face_of_index[i] = f;
+      halfedge_descriptor h = halfedge(f, tm);
+      for(int k = 0; k < 3; ++k, h = next(h, tm))
+        m_halfedge_of_index[3 * i + std::size_t(k)] = h;
+    }
+    m_vim = [vim](vertex_descriptor v) { return int(get(vim, v)); };
+    m_fim = [fim](face_descriptor f) { return int(get(fim, f)); };
+    m_seconds_setup = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+
+  /// \name Sources
+  /// Adding a source discards the result of the last `build()`.
+  /// @{
+
+  /// adds a source at a vertex and returns its index (the number of sources added before it).
+  /// \throws Geodesic_error when `v` is not a vertex of the mesh (index out of range)
+  std::size_t add_source(vertex_descriptor v)
+  {
+    Geodesics_3::internal::Source_point s;
+    s.vertex = m_vim(v);
+    return add(s);
+  }
+  /// adds a source at a point of a face and returns its index.
+  /// \throws Geodesic_error when the face is out of range or the coordinates are not a convex
+  ///         combination
+  std::size_t add_source(const Face_location& location)
+  {
+    Geodesics_3::internal::Source_point s;
+    s.face = m_fim(location.first);
+    for(int k = 0; k < 3; ++k)
+      s.barycentric[k] = CGAL::to_double(location.second[k]);
+    return add(s);
+  }
+  /// adds a source at a point of a face and returns its index.
+  std::size_t add_source(face_descriptor f, const Barycentric_coordinates& b) { return add_source(Face_location(f, b)); }
+  /// adds a range of vertices or of face locations.
+  template <class Range>
+  void add_sources(const Range& sources)
+  {
+    for(const auto& s : sources)
+      add_source(s);
+  }
+  /// the number of sources added, duplicates included.
+  std::size_t number_of_sources() const { return m_sources.size(); }
+  /// removes every source.
+  void clear_sources()
+  {
+    m_sources.clear();
+    m_solver.reset();
+  }
+  /// @}
+
+  /// computes the windows from which every query is answered; sources may be added and `build()`
+  /// called again.
+  ///
+  /// \cgalNamedParamsBegin
+  ///   \cgalParamNBegin{algorithm}
+  ///     \cgalParamDescription{sequential only: `CGAL_ext::MMP` (windows in exact order, from a binary
+  ///                           heap) or `CGAL_ext::FWP_MMP` (bucket by bucket, faster); with
+  ///                           `CGAL::Parallel_tag` the build is always PMMP}
+  ///     \cgalParamType{`CGAL_ext::Geodesic_algorithm`}
+  ///     \cgalParamDefault{`CGAL_ext::FWP_MMP`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{number_of_threads}
+  ///     \cgalParamDescription{PMMP: the number of threads (in a `tbb::task_arena`), `0` for as many as TBB chooses}
+  ///     \cgalParamType{`int`, non-negative}
+  ///     \cgalParamDefault{`0`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{batch_size}
+  ///     \cgalParamDescription{PMMP: how many windows are selected and propagated together at most}
+  ///     \cgalParamType{`std::size_t`, positive}
+  ///     \cgalParamDefault{`CGAL_ext::default_window_batch_size` (1024)}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{max_distance}
+  ///     \cgalParamDescription{the propagation stops beyond this distance; farther points are at `+infinity`}
+  ///     \cgalParamType{`double`, non-negative}
+  ///     \cgalParamDefault{`+infinity`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{statistics}
+  ///     \cgalParamDescription{receives windows created and kept, memory and seconds per phase (also
+  ///                           given by `statistics()`)}
+  ///     \cgalParamType{`CGAL_ext::Geodesic_statistics&`}
+  ///   \cgalParamNEnd
+  /// \cgalNamedParamsEnd
+  ///
+  /// \throws Geodesic_error when no source was added, `algorithm` is not an MMP variant,
+  ///         `max_distance` is negative, `number_of_threads` negative or `batch_size` zero
+  template <class NamedParameters = parameters::Default_named_parameters_type>
+  void build(const NamedParameters& np = parameters::default_values())
+  {
+    using CGAL::parameters::choose_parameter;
+    using CGAL::parameters::get_parameter;
+    // (CGAL::Parallel_if_available_tag is CGAL::Parallel_tag when TBB is linked)
+    constexpr bool parallel = std::is_same<ConcurrencyTag, CGAL::Parallel_tag>::value;
+    m_solver.reset();
+    m_tracer.reset();
+    if(m_sources.empty())
+      throw Geodesic_error("no source was given");
+    const Geodesic_algorithm algorithm = choose_parameter(get_parameter(np, CGAL::internal_np::algorithm), FWP_MMP);
+    if(algorithm != MMP && algorithm != FWP_MMP)
+      throw Geodesic_error("Surface_mesh_geodesic_paths builds with MMP or FWP_MMP only, got algorithm " +
+                           std::to_string(int(algorithm)));
+    auto solver = std::make_unique<Geodesics_3::internal::MMP_solver>(m_cache);
+    for(const auto& s : m_sources)
+      solver->add_source(s);
+    solver->set_max_distance(choose_parameter(get_parameter(np, internal_np::max_distance),
+                                              std::numeric_limits<double>::infinity()));
+    solver->set_queue(algorithm == MMP ? Geodesics_3::internal::MMP_solver::BINARY_HEAP
+                                       : Geodesics_3::internal::MMP_solver::BUCKETS);
+    const long threads = static_cast<long>(choose_parameter(get_parameter(np, internal_np::number_of_threads), 0));
+    if(threads < 0)
+      throw Geodesic_error("number of threads must be non-negative, got " + std::to_string(threads));
+    const auto batch = choose_parameter(get_parameter(np, internal_np::batch_size), default_window_batch_size);
+    if(!(batch > 0))
+      throw Geodesic_error("batch size must be positive, got " + std::to_string(batch));
+    solver->set_batch_size(static_cast<std::size_t>(batch));
+    if constexpr(parallel)
+      solver->set_parallel();
+    Geodesics_3::internal::run_solver<parallel>(*solver, int(threads));
+    m_statistics = solver->statistics();
+    m_statistics.seconds_setup = m_seconds_setup;
+    m_solver = std::move(solver);
+    m_tracer = std::make_unique<Geodesics_3::internal::Geodesic_path_tracer>(*m_solver);
+    Geodesic_statistics* stats =
+      choose_parameter(get_parameter(np, internal_np::statistics), static_cast<Geodesic_statistics*>(nullptr));
+    if(stats)
+      *stats = m_statistics;
+  }
+
+  /// whether `build()` ran since the sources last changed.
+  bool is_built() const { return m_solver != nullptr; }
+
+  /// \name Queries
+  /// Each throws `Geodesic_error` when `build()` has not run since the sources last changed, or
+  /// when a face location is out of range or not a convex combination.
+  /// @{
+
+  /// the distance from the nearest source to `v`.
+  FT distance(vertex_descriptor v) const { return FT(built().distances()[std::size_t(checked(v))]); }
+  /// the distance from the nearest source to a point of a face.
+  FT distance(const Face_location& p) const
+  {
+    int source;
+    return FT(tracer().distance(locate(p), source));
+  }
+  /// the index of the nearest source of `v` (in the order sources were added; the first of
+  /// equal sources), or `no_source`.
+  std::size_t nearest_source(vertex_descriptor v) const
+  {
+    const int s = built().nearest_sources()[std::size_t(checked(v))];
+    return s < 0 ? no_source : std::size_t(s);
+  }
+  /// the index of the nearest source of a point of a face, or `no_source`.
+  std::size_t nearest_source(const Face_location& p) const
+  {
+    int s;
+    tracer().distance(locate(p), s);
+    return s < 0 ? no_source : std::size_t(s);
+  }
+  /// writes the distance of every vertex to `vertex_distance_map` (a writable property map with
+  /// `vertex_descriptor` keys and `FT` or `double` values).
+  template <class VertexDistanceMap>
+  void vertex_distances(VertexDistanceMap vertex_distance_map) const
+  {
+    const std::vector<double>& d = built().distances();
+    for(std::size_t i = 0; i < d.size(); ++i)
+      put(vertex_distance_map, m_vertex_of_index[i], d[i]);
+  }
+
+  /// writes the points of the shortest path from the nearest source to `target` (a vertex or a
+  /// `Face_location`) to `out` as `Point_3`, the source first; writes nothing when no source
+  /// reaches `target`.
+  template <class Target, class OutputIterator>
+  OutputIterator shortest_path_points(const Target& target, OutputIterator out) const
+  {
+    for_each_path_point(target, [&](const Path_point& p) { *out++ = p.point; });
+    return out;
+  }
+  /// writes the points of the shortest path from the nearest source to `target` to `out` as
+  /// `Path_point` (where each lies on the mesh), the source first.
+  template <class Target, class OutputIterator>
+  OutputIterator shortest_path_surface_points(const Target& target, OutputIterator out) const
+  {
+    for_each_path_point(target, [&](const Path_point& p) { *out++ = p; });
+    return out;
+  }
+  /// calls `visitor` on each point of the shortest path from the nearest source to `target`, the
+  /// source first: `visitor(v)` with a `vertex_descriptor` at a vertex, `visitor(h, t)` with a
+  /// `halfedge_descriptor` and an `FT` on an edge (at `(1 - t) source(h) + t target(h)`), and
+  /// `visitor(f, b)` with a `face_descriptor` and `Barycentric_coordinates` inside a face.
+  /// Returns the visitor.
+  template <class Target, class Visitor>
+  Visitor shortest_path_sequence(const Target& target, Visitor visitor) const
+  {
+    for_each_path_point(target, [&](const Path_point& p) {
+      if(p.kind == Path_point::VERTEX)
+        visitor(p.vertex);
+      else if(p.kind == Path_point::EDGE)
+        visitor(p.halfedge, p.t);
+      else
+        visitor(p.face, p.barycentric);
+    });
+    return visitor;
+  }
+  /// what the last `build()` did: windows created and kept, their memory, seconds per phase.
+  const Geodesic_statistics& statistics() const { return m_statistics; }
+  /// @}
+
+private:
+  std::size_t add(Geodesics_3::internal::Source_point s)
+  {
+    // checked here, so that the error names the source being added
+    s = Geodesics_3::internal::normalized_source(m_cache, s);
+    m_sources.push_back(s);
+    m_solver.reset();
+    m_tracer.reset();
+    return m_sources.size() - 1;
+  }
+
+  const Geodesics_3::internal::MMP_solver& built() const
+  {
+    if(!m_solver)
+      throw Geodesic_error("build() must be called after the sources are added and before any query");
+    return *m_solver;
+  }
+  const Geodesics_3::internal::Geodesic_path_tracer& tracer() const
+  {
+    built();
+    return *m_tracer;
+  }
+
+  int checked(vertex_descriptor v) const { return tracer().locate_vertex(m_vim(v)).vertex; }
+  Location locate(vertex_descriptor v) const { return tracer().locate_vertex(m_vim(v)); }
+  Location locate(const Face_location& p) const
+  {
+    std::array<double, 3> b;
+    for(int k = 0; k < 3; ++k)
+      b[k] = CGAL::to_double(p.second[k]);
+    return tracer().locate(m_fim(p.first), b);
+  }
+
+  template <class Target, class Function>
+  void for_each_path_point(const Target& target, Function f) const
+  {
+    std::vector<Location> path;
+    const Geodesics_3::internal::Geodesic_path_tracer& t = tracer();
+    t.trace(locate(target), path);
+    for(auto it = path.rbegin(); it != path.rend(); ++it)
+      f(to_path_point(*it));
+  }
+
+  Path_point to_path_point(const Location& l) const
+  {
+    Path_point p;
+    p.kind = l.kind == Location::VERTEX ? Path_point::VERTEX
+                                        : (l.kind == Location::EDGE ? Path_point::EDGE : Path_point::FACE);
+    p.t = FT(0);
+    p.barycentric = {{FT(0), FT(0), FT(0)}};
+    if(l.kind == Location::VERTEX) {
+      p.vertex = m_vertex_of_index[std::size_t(l.vertex)];
+      p.point = get(m_vpm, p.vertex);
+      return p;
+    }
+    if(l.kind == Location::EDGE) {
+      p.halfedge = m_halfedge_of_index[std::size_t(l.halfedge)];
+      p.t = FT(l.t);
+    } else {
+      p.face = m_face_of_index[std::size_t(l.face)];
+      for(int k = 0; k < 3; ++k)
+        p.barycentric[k] = FT(l.barycentric[k]);
+    }
+    const std::array<double, 3> x = m_tracer->position(l);
+    p.point = Point_3(x[0], x[1], x[2]);
+    return p;
+  }
+
+  const TriangleMesh& m_tm;
+  VertexPointMap m_vpm;
+  std::function<int(vertex_descriptor)> m_vim;
+  std::function<int(face_descriptor)> m_fim;
+  Geodesics_3::internal::Mesh_cache m_cache;
+  std::vector<vertex_descriptor> m_vertex_of_index;
+  std::vector<face_descriptor> m_face_of_index;
+  std::vector<halfedge_descriptor> m_halfedge_of_index;
+  std::vector<Geodesics_3::internal::Source_point> m_sources;
+  std::unique_ptr<Geodesics_3::internal::MMP_solver> m_solver;
+  std::unique_ptr<Geodesics_3::internal::Geodesic_path_tracer> m_tracer;
+  Geodesic_statistics m_statistics;
+  double m_seconds_setup = 0;
+};
+
+} // namespace CGAL_ext
+
+#endif // CGAL_EXT_SURFACE_MESH_GEODESIC_PATHS_H
