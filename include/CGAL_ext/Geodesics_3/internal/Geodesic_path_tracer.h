@@ -148,11 +148,19 @@ public:
       return false;
     path.push_back(target);
     Surface_location p = target;
+    // After crossing an edge the path goes on in the face beyond it, and the distance left is
+    // known: the first way that matches it is the one.
+    int face_beyond = -1;
+    double left = infinity();
     const std::size_t max_steps = 4 * (m_mesh.number_of_faces + m_mesh.number_of_vertices) + 16;
     for(std::size_t step = 0; step < max_steps; ++step) {
       if(p.kind == Surface_location::VERTEX && m_solver.distances()[p.vertex] == 0)
         return true; // a source vertex
-      const Candidate c = best_way_to(p);
+      Candidate c;
+      if(face_beyond >= 0)
+        best_in_face(face_beyond, barycentric_in(face_beyond, p), c, left);
+      if(c.kind == Candidate::NONE || c.distance > left + 1e-9 * (left + m_mesh.mean_edge_length))
+        c = best_way_to(p); // the window that led here was clipped since: look everywhere
       if(!(c.distance < infinity()))
         break;
       if(c.kind == Candidate::SOURCE) {
@@ -163,10 +171,16 @@ public:
         path.push_back(s);
         return true;
       }
+      face_beyond = -1;
       if(c.kind == Candidate::VERTEX)
         p = Surface_location::at_vertex(c.index);
-      else
+      else {
         p = on_edge(c.index, c.x / m_mesh.frame[c.index].length);
+        if(p.kind == Surface_location::EDGE) {
+          face_beyond = Mesh_cache::face(m_mesh.opposite(c.index));
+          left = c.distance - c.segment;
+        }
+      }
       path.push_back(p);
     }
     throw Geodesic_error("internal error: the shortest path from the target did not reach a source; please report it");
@@ -219,6 +233,7 @@ private:
     double distance = std::numeric_limits<double>::infinity();
     int index = -1;  // WINDOW: the half-edge crossed; VERTEX: the vertex; SOURCE: in m_face_sources
     double x = 0;    // WINDOW: where, from the source of the half-edge
+    double segment = 0; // WINDOW: the length from the point to the crossing
     int face = -1;   // SOURCE: the face
     int source = -1; // the source the path starts from
   };
@@ -238,6 +253,25 @@ private:
     return p;
   }
 
+  // The barycentric coordinates in face f of a point of its closure.
+  std::array<double, 3> barycentric_in(int f, const Surface_location& p) const
+  {
+    std::array<double, 3> b{{0., 0., 0.}};
+    if(p.kind == Surface_location::FACE)
+      return p.barycentric;
+    for(int k = 0; k < 3; ++k) {
+      const int h = 3 * f + k;
+      if(p.kind == Surface_location::VERTEX && m_mesh.source(h) == p.vertex)
+        b[k] = 1;
+      if(p.kind == Surface_location::EDGE && (h == p.halfedge || h == m_mesh.opposite(p.halfedge))) {
+        const double t = h == p.halfedge ? p.t : 1 - p.t;
+        b[k] = 1 - t;
+        b[(k + 1) % 3] = t;
+      }
+    }
+    return b;
+  }
+
   // The best way to reach p, over the faces p belongs to.
   Candidate best_way_to(const Surface_location& p) const
   {
@@ -245,17 +279,10 @@ private:
     if(p.kind == Surface_location::FACE) {
       best_in_face(p.face, p.barycentric, best);
     } else if(p.kind == Surface_location::EDGE) {
-      std::array<double, 3> b{{0., 0., 0.}};
-      b[p.halfedge % 3] = 1 - p.t;
-      b[Mesh_cache::next(p.halfedge) % 3] = p.t;
-      best_in_face(Mesh_cache::face(p.halfedge), b, best);
+      best_in_face(Mesh_cache::face(p.halfedge), barycentric_in(Mesh_cache::face(p.halfedge), p), best);
       const int o = m_mesh.opposite(p.halfedge);
-      if(o >= 0) {
-        std::array<double, 3> bo{{0., 0., 0.}};
-        bo[o % 3] = p.t;
-        bo[Mesh_cache::next(o) % 3] = 1 - p.t;
-        best_in_face(Mesh_cache::face(o), bo, best);
-      }
+      if(o >= 0)
+        best_in_face(Mesh_cache::face(o), barycentric_in(Mesh_cache::face(o), p), best);
     } else {
       m_mesh.for_each_outgoing(p.vertex, [&](int h) {
         std::array<double, 3> b{{0., 0., 0.}};
@@ -270,8 +297,12 @@ private:
   // do not start where the point is (edges and corners it lies on are skipped). A corner wins
   // only when strictly shorter than the other ways, so that ties of round-off never route a
   // path through a vertex that it only grazes.
-  void best_in_face(int f, const std::array<double, 3>& b, Candidate& best) const
+  // With `expected` (the point's distance when known), the first way within round-off of it
+  // is taken without looking further.
+  void best_in_face(int f, const std::array<double, 3>& b, Candidate& best,
+                    double expected = -std::numeric_limits<double>::infinity()) const
   {
+    const double good_enough = expected + 1e-12 * (std::abs(expected) + m_mesh.mean_edge_length);
     const Halfedge_frame& f0 = m_mesh.frame[3 * f];
     // p in the frame of half-edge 3f
     const double px = b[1] * f0.length + b[2] * f0.apex_x, py = b[2] * f0.apex_y;
@@ -306,15 +337,21 @@ private:
         const double x = w.sx + (qx - w.sx) * (-w.sy) / (qy - w.sy); // where the ray to p crosses
         if(!(x >= w.b0 - tolerance && x <= w.b1 + tolerance))
           continue;
+        const double segment = norm2d(qx - std::min(std::max(x, w.b0), w.b1), qy);
         const double d = w.sigma + norm2d(qx - w.sx, qy - w.sy);
         if(d < best.distance) {
           best.kind = Candidate::WINDOW;
           best.distance = d;
           best.index = h;
           best.x = std::min(std::max(x, w.b0), w.b1);
+          best.segment = segment;
           best.source = ew->source;
+          if(d <= good_enough)
+            break;
         }
       }
+      if(best.kind == Candidate::WINDOW && best.distance <= good_enough)
+        break;
     }
     auto first = std::lower_bound(m_face_sources.begin(), m_face_sources.end(), f,
                                   [](const Face_source& s, int face) { return s.face < face; });
