@@ -243,6 +243,7 @@ private:
   struct Propagation_output
   {
     Edge_window* window = nullptr;
+    std::uint32_t version = 0; // PMMP: of the queue entry
     New_window children[2];
     int number_of_children = 0;
     Vertex_update apex{-1, -1, 0.};
@@ -386,62 +387,80 @@ private:
     std::vector<Bucket_queue<Queue_item>::Entry>& bucket = m_bucket_entries;
     std::vector<Propagation_output>& selected = m_selected;
     for(;;) {
-      // 1. Selection: up to K windows from the lowest buckets; pseudo-sources emit at once.
+      // 1. Selection: up to K window entries from the lowest buckets (stale ones are recognized
+      // by the propagation tasks, in parallel); pseudo-sources emit at once.
       auto start = std::chrono::steady_clock::now();
       std::size_t n = 0;
       while(n < m_batch_size) {
-        m_buckets.pop_lowest(bucket);
+        m_buckets.pop_lowest(bucket, m_batch_size - n);
         if(bucket.empty())
           break;
         for(const auto& e : bucket) {
-          if(is_stale(e.first, e.second) || e.first > m_max_distance)
+          if(e.first > m_max_distance)
             continue;
-          if(n >= m_batch_size) {
-            m_buckets.push(e.first, e.second); // waits for the next round
+          if(!e.second.window) {
+            if(!is_stale(e.first, e.second))
+              emit_from_vertex(e.second.vertex);
             continue;
           }
-          if(e.second.window) {
-            if(selected.size() <= n)
-              selected.resize(n + 1);
-            selected[n++].window = e.second.window;
-            e.second.window->queued = 0;
-          } else {
-            emit_from_vertex(e.second.vertex);
-          }
+          if(selected.size() <= n)
+            selected.resize(n + 1);
+          selected[n].window = e.second.window;
+          selected[n++].version = e.second.version;
         }
       }
       m_statistics.seconds_selection += seconds_since(start);
       if(n == 0 && m_new.empty())
         return;
-      m_statistics.windows_propagated += n;
 
       // 2. Propagation, in parallel: each task reads its window and the vertex distances, and
-      // writes only its own output.
+      // writes only its own output and its window's queued flag (each queue entry names one
+      // version of a window, and only the window's current version is ever queued once).
       start = std::chrono::steady_clock::now();
-      for_each_index(n, 8, [&](std::size_t i, std::size_t) { propagate(selected[i]); });
+      for_each_index(n, 8, [&](std::size_t i, std::size_t) {
+        Propagation_output& p = selected[i];
+        if(p.window->version != p.version || !p.window->queued) {
+          p.number_of_children = 0;
+          p.apex.vertex = -1;
+          p.window = nullptr;
+          return;
+        }
+        p.window->queued = 0;
+        propagate(p);
+      });
       m_statistics.seconds_propagation += seconds_since(start);
 
-      // 3. Organization: apex distances, then the new windows filed by edge in a fixed order.
+      // 3. Organization: apex distances, then the new windows linked by edge in a fixed order
+      // (children of selected window i are numbered 2i and 2i+1, emitted windows follow).
       start = std::chrono::steady_clock::now();
+      if(m_child_next.size() < 2 * n + m_new.size())
+        m_child_next.resize(2 * n + m_new.size());
       for(std::size_t i = 0; i < n; ++i) {
         const Propagation_output& p = selected[i];
+        if(!p.window)
+          continue;
+        ++m_statistics.windows_propagated;
         if(p.apex.vertex >= 0)
           relax(p.apex);
         for(int c = 0; c < p.number_of_children; ++c)
-          file_by_edge(p.children[c]);
+          file_by_edge(p.children[c].halfedge, int(2 * i) + c);
       }
-      for(const New_window& w : m_new)
-        file_by_edge(w);
-      m_new.clear();
+      for(std::size_t i = 0; i < m_new.size(); ++i)
+        file_by_edge(m_new[i].halfedge, int(2 * n + i));
+      auto child = [&](int id) -> const New_window& {
+        return std::size_t(id) < 2 * n ? selected[std::size_t(id) / 2].children[id % 2] : m_new[std::size_t(id) - 2 * n];
+      };
       m_statistics.seconds_organization += seconds_since(start);
 
       // 4. Clipping, in parallel: one task per edge; it reads the vertex distances and writes
       // only its edge's windows, its pool slot and its own output.
       start = std::chrono::steady_clock::now();
       const std::size_t edges = m_active_edges.size();
+      if(m_edge_outputs.size() < edges)
+        m_edge_outputs.resize(edges);
       for_each_index(edges, 1, [&](std::size_t j, std::size_t slot) {
-        for(const New_window& w : m_batches[j])
-          insert_window(w, slot, m_edge_outputs[j]);
+        for(int id = m_active_edges[j].first_child; id >= 0; id = m_child_next[std::size_t(id)])
+          insert_window(child(id), slot, m_edge_outputs[j]);
       });
       m_statistics.seconds_clipping += seconds_since(start);
 
@@ -449,28 +468,29 @@ private:
       start = std::chrono::steady_clock::now();
       for(std::size_t j = 0; j < edges; ++j) {
         apply(m_edge_outputs[j]);
-        m_batches[j].clear();
-        m_edge_batch[m_active_edges[j]] = -1;
+        m_edge_batch[std::size_t(m_active_edges[j].edge)] = -1;
       }
       m_active_edges.clear();
+      m_new.clear();
       note_live_windows();
       m_statistics.seconds_pushing += seconds_since(start);
     }
   }
 
-  void file_by_edge(const New_window& w)
+  // Appends new window `id` to the list of its edge, making the edge active if it is not.
+  void file_by_edge(int halfedge, int id)
   {
-    const int e = reference(w.halfedge);
-    int& batch = m_edge_batch[e];
+    const int e = reference(halfedge);
+    int& batch = m_edge_batch[std::size_t(e)];
     if(batch < 0) {
       batch = int(m_active_edges.size());
-      m_active_edges.push_back(e);
-      if(m_batches.size() < m_active_edges.size()) {
-        m_batches.resize(m_active_edges.size());
-        m_edge_outputs.resize(m_active_edges.size());
-      }
+      m_active_edges.push_back(Active_edge{e, id, id});
+    } else {
+      Active_edge& a = m_active_edges[std::size_t(batch)];
+      m_child_next[std::size_t(a.last_child)] = id;
+      a.last_child = id;
     }
-    m_batches[std::size_t(batch)].push_back(w);
+    m_child_next[std::size_t(id)] = -1;
   }
 
   // Calls f(i, pool slot) for i in [0, n): on TBB threads in PMMP, in order otherwise.
@@ -715,8 +735,13 @@ private:
   // PMMP
   std::vector<Propagation_output> m_selected;
   std::vector<int> m_edge_batch; // per reference half-edge: its index among the active edges, or -1
-  std::vector<int> m_active_edges;
-  std::vector<std::vector<New_window>> m_batches;
+  struct Active_edge
+  {
+    int edge;
+    int first_child, last_child; // the new windows filed under it, linked through m_child_next
+  };
+  std::vector<Active_edge> m_active_edges;
+  std::vector<int> m_child_next;
   std::vector<Edge_output> m_edge_outputs;
   std::size_t m_batch_size = 1024;
   bool m_parallel = false;

@@ -76,15 +76,22 @@ public:
   bool empty() const { return m_size == 0; }
   std::size_t size() const { return m_size; }
 
-  /// Moves the entries of the lowest non-empty bucket to `out` (which is cleared first).
-  void pop_lowest(std::vector<Entry>& out)
+  /// Moves the entries of the lowest non-empty bucket to `out` (which is cleared first), at
+  /// most `max_count` of them.
+  void pop_lowest(std::vector<Entry>& out, std::size_t max_count = std::size_t(-1))
   {
     out.clear();
     while(m_first < m_buckets.size() && m_buckets[m_first].empty())
       ++m_first;
     if(m_first == m_buckets.size())
       return;
-    out.swap(m_buckets[m_first]);
+    std::vector<Entry>& b = m_buckets[m_first];
+    if(b.size() <= max_count)
+      out.swap(b);
+    else {
+      out.assign(b.end() - std::ptrdiff_t(max_count), b.end());
+      b.resize(b.size() - max_count);
+    }
     m_size -= out.size();
   }
   template <class Function>
