@@ -94,6 +94,7 @@ public:
   /// A point of a path: where it lies on the mesh, and its position.
   struct Path_point
   {
+    /// where the point lies
     enum Kind
     {
       VERTEX, ///< at `vertex`
@@ -111,6 +112,9 @@ public:
 
   /// prepares queries on `tm`, which must stay alive and unchanged while this object is used;
   /// checks the mesh.
+  ///
+  /// \param tm the triangle mesh
+  /// \param np optional named parameters among the ones listed below
   ///
   /// \cgalNamedParamsBegin
   ///   \cgalParamNBegin{vertex_point_map}
@@ -166,7 +170,9 @@ public:
   /// Adding a source discards the result of the last `build()`.
   /// @{
 
-  /// adds a source at a vertex and returns its index (the number of sources added before it).
+  /// adds a source at a vertex.
+  /// \param v the vertex
+  /// \return the index of the source (the number of sources added before it)
   /// \throws Geodesic_error when `v` is not a vertex of the mesh (index out of range)
   std::size_t add_source(vertex_descriptor v)
   {
@@ -174,7 +180,9 @@ public:
     s.vertex = m_vim(v);
     return add(s);
   }
-  /// adds a source at a point of a face and returns its index.
+  /// adds a source at a point of a face.
+  /// \param location the face and barycentric coordinates of the point
+  /// \return the index of the source
   /// \throws Geodesic_error when the face is out of range or the coordinates are not a convex
   ///         combination
   std::size_t add_source(const Face_location& location)
@@ -185,16 +193,20 @@ public:
       s.barycentric[k] = CGAL::to_double(location.second[k]);
     return add(s);
   }
-  /// adds a source at a point of a face and returns its index.
+  /// adds a source at a point of a face.
+  /// \param f the face
+  /// \param b barycentric coordinates of the point in `f`
+  /// \return the index of the source
   std::size_t add_source(face_descriptor f, const Barycentric_coordinates& b) { return add_source(Face_location(f, b)); }
-  /// adds a range of vertices or of face locations.
+  /// adds sources.
+  /// \param sources a range of vertices or of face locations
   template <class Range>
   void add_sources(const Range& sources)
   {
     for(const auto& s : sources)
       add_source(s);
   }
-  /// the number of sources added, duplicates included.
+  /// \return the number of sources added, duplicates included
   std::size_t number_of_sources() const { return m_sources.size(); }
   /// removes every source.
   void clear_sources()
@@ -206,6 +218,8 @@ public:
 
   /// computes the windows from which every query is answered; sources may be added and `build()`
   /// called again.
+  ///
+  /// \param np optional named parameters among the ones listed below
   ///
   /// \cgalNamedParamsBegin
   ///   \cgalParamNBegin{algorithm}
@@ -281,7 +295,7 @@ public:
       *stats = m_statistics;
   }
 
-  /// whether `build()` ran since the sources last changed.
+  /// \return whether `build()` ran since the sources last changed
   bool is_built() const { return m_solver != nullptr; }
 
   /// \name Queries
@@ -289,30 +303,35 @@ public:
   /// when a face location is out of range or not a convex combination.
   /// @{
 
-  /// the distance from the nearest source to `v`.
+  /// \param v a vertex
+  /// \return the distance from the nearest source to `v`
   FT distance(vertex_descriptor v) const { return FT(built().distances()[std::size_t(checked(v))]); }
-  /// the distance from the nearest source to a point of a face.
+  /// \param p a point of a face
+  /// \return the distance from the nearest source to `p`
   FT distance(const Face_location& p) const
   {
     int source;
     return FT(tracer().distance(locate(p), source));
   }
-  /// the index of the nearest source of `v` (in the order sources were added; the first of
-  /// equal sources), or `no_source`.
+  /// \param v a vertex
+  /// \return the index of the nearest source of `v` (in the order sources were added; the first
+  ///         of equal sources), or `no_source`
   std::size_t nearest_source(vertex_descriptor v) const
   {
     const int s = built().nearest_sources()[std::size_t(checked(v))];
     return s < 0 ? no_source : std::size_t(s);
   }
-  /// the index of the nearest source of a point of a face, or `no_source`.
+  /// \param p a point of a face
+  /// \return the index of the nearest source of `p`, or `no_source`
   std::size_t nearest_source(const Face_location& p) const
   {
     int s;
     tracer().distance(locate(p), s);
     return s < 0 ? no_source : std::size_t(s);
   }
-  /// writes the distance of every vertex to `vertex_distance_map` (a writable property map with
-  /// `vertex_descriptor` keys and `FT` or `double` values).
+  /// writes the distance of every vertex.
+  /// \param vertex_distance_map a writable property map with `vertex_descriptor` keys and `FT`
+  ///        or `double` values
   template <class VertexDistanceMap>
   void vertex_distances(VertexDistanceMap vertex_distance_map) const
   {
@@ -321,17 +340,22 @@ public:
       put(vertex_distance_map, m_vertex_of_index[i], d[i]);
   }
 
-  /// writes the points of the shortest path from the nearest source to `target` (a vertex or a
-  /// `Face_location`) to `out` as `Point_3`, the source first; writes nothing when no source
-  /// reaches `target`.
+  /// writes the points of the shortest path from the nearest source to `target`, the source
+  /// first; writes nothing when no source reaches `target`.
+  /// \param target a vertex or a `Face_location`
+  /// \param out an output iterator accepting `Point_3`
+  /// \return the output iterator past the last point
   template <class Target, class OutputIterator>
   OutputIterator shortest_path_points(const Target& target, OutputIterator out) const
   {
     for_each_path_point(target, [&](const Path_point& p) { *out++ = p.point; });
     return out;
   }
-  /// writes the points of the shortest path from the nearest source to `target` to `out` as
-  /// `Path_point` (where each lies on the mesh), the source first.
+  /// writes the points of the shortest path from the nearest source to `target` with where each
+  /// lies on the mesh, the source first.
+  /// \param target a vertex or a `Face_location`
+  /// \param out an output iterator accepting `Path_point`
+  /// \return the output iterator past the last point
   template <class Target, class OutputIterator>
   OutputIterator shortest_path_surface_points(const Target& target, OutputIterator out) const
   {
@@ -342,7 +366,9 @@ public:
   /// source first: `visitor(v)` with a `vertex_descriptor` at a vertex, `visitor(h, t)` with a
   /// `halfedge_descriptor` and an `FT` on an edge (at `(1 - t) source(h) + t target(h)`), and
   /// `visitor(f, b)` with a `face_descriptor` and `Barycentric_coordinates` inside a face.
-  /// Returns the visitor.
+  /// \param target a vertex or a `Face_location`
+  /// \param visitor the visitor, taken by value
+  /// \return the visitor after the visit
   template <class Target, class Visitor>
   Visitor shortest_path_sequence(const Target& target, Visitor visitor) const
   {
@@ -356,7 +382,7 @@ public:
     });
     return visitor;
   }
-  /// what the last `build()` did: windows created and kept, their memory, seconds per phase.
+  /// \return what the last `build()` did: windows created and kept, their memory, seconds per phase
   const Geodesic_statistics& statistics() const { return m_statistics; }
   /// @}
 
