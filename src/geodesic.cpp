@@ -1,12 +1,19 @@
 // Copyright (c) 2026 The CGAL_ext geodesics developers.
 // geodesic: the command-line front end of the package.
 //
-//   geodesic distances MESH --source S[,S...] [--algorithm vtp|pvtp|avtp|pavtp] [--lambda L]
-//                      [--threads N] [--batch-size K] [--max-distance D] [--output FILE] [--stats]
+//   geodesic distances MESH --source S[,S...] [--algorithm vtp|pvtp|avtp|pavtp|mmp|fwp-mmp|pmmp]
+//                      [--lambda L] [--threads N] [--batch-size K] [--max-distance D]
+//                      [--output FILE.txt|FILE.ply] [--stats]
+//   geodesic path MESH --source S[,S...] --target T [--algorithm fwp-mmp|mmp|pmmp] [--threads N]
+//                 [--batch-size K] [--max-distance D] [--output FILE.txt|FILE.obj|FILE.ply] [--stats]
 //
-// Vertex and face ids are those of the file (its order of vertices and faces). Every error is
-// one line `error: ...` on stderr, exit code 1 (2 for a bad command line), and no output file.
+// S and T are a vertex id or a face point f:FACE:b0:b1:b2 (barycentric coordinates in the order
+// of the face's vertices in the file). Vertex and face ids are those of the file (its order of
+// vertices and faces). `path` writes the shortest path from the nearest source to T as a
+// polyline, the source first. Every error is one line `error: ...` on stderr, exit code 1 (2 for
+// a bad command line), and no output file.
 
+#include <CGAL_ext/Surface_mesh_geodesic_paths.h>
 #include <CGAL_ext/geodesic_distances.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -36,6 +43,7 @@
 #include <functional>
 #include <iomanip>
 #include <iostream>
+#include <iterator>
 #include <limits>
 #include <map>
 #include <numeric>
@@ -93,15 +101,31 @@ std::string number_text(T value)
 // ---------------------------------------------------------------------------------------------
 // Command line
 
+/// The solver options of both subcommands.
+struct Solver_options
+{
+  std::string algorithm;
+  std::optional<double> lambda; // distances only
+  std::optional<int> threads;
+  std::optional<long long> batch_size;
+  double max_distance = infinity;
+};
+
 struct Distances_options
 {
   std::string mesh;
   std::vector<std::string> sources;
-  std::string algorithm = "vtp";
-  std::optional<double> lambda;
-  std::optional<int> threads;
-  std::optional<long long> batch_size;
-  double max_distance = infinity;
+  Solver_options solver{"vtp"};
+  std::string output;
+  bool stats = false;
+};
+
+struct Path_options
+{
+  std::string mesh;
+  std::vector<std::string> sources;
+  std::string target;
+  Solver_options solver{"fwp-mmp"};
   std::string output;
   bool stats = false;
 };
@@ -110,12 +134,34 @@ struct Distances_options
 struct Algorithm
 {
   const char* name;
-  bool parallel;    // CGAL::Parallel_tag
-  bool approximate; // the named parameter approximation(lambda)
+  bool parallel;                        // CGAL::Parallel_tag
+  bool approximate;                     // the named parameter approximation(lambda)
+  CGAL_ext::Geodesic_algorithm library; // the named parameter algorithm()
 };
 
 const Algorithm algorithms[] = {
-  {"vtp", false, false}, {"pvtp", true, false}, {"avtp", false, true}, {"pavtp", true, true}};
+  {"vtp", false, false, CGAL_ext::VTP},      {"pvtp", true, false, CGAL_ext::VTP},
+  {"avtp", false, true, CGAL_ext::VTP},      {"pavtp", true, true, CGAL_ext::VTP},
+  {"fwp-mmp", false, false, CGAL_ext::FWP_MMP}, {"mmp", false, false, CGAL_ext::MMP},
+  {"pmmp", true, false, CGAL_ext::FWP_MMP}};
+
+/// Whether the solver keeps its windows on the edges (the MMP family), which paths need.
+bool keeps_windows(const Algorithm& a) { return a.library != CGAL_ext::VTP; }
+
+/// The names of the algorithms that satisfy `wanted` (and keep windows, for paths), as
+/// "a, b and c" (`conjunction` "and" or "or").
+template <class Predicate>
+std::string algorithm_names(Predicate wanted, bool for_paths, const char* conjunction)
+{
+  std::vector<std::string> names;
+  for(const Algorithm& a : algorithms)
+    if(wanted(a) && (!for_paths || keeps_windows(a)))
+      names.push_back(a.name);
+  std::string text;
+  for(std::size_t i = 0; i < names.size(); ++i)
+    text += (i == 0 ? "" : (i + 1 == names.size() ? std::string(" ") + conjunction + " " : ", ")) + names[i];
+  return text;
+}
 
 const double default_lambda = 8;
 
@@ -159,40 +205,51 @@ struct Solver_choice
   double max_distance = infinity;
 };
 
-Solver_choice solver_choice(const Distances_options& options)
+/// Checks the solver options of `distances`, or of `path` (`for_paths`: the MMP family only).
+Solver_choice solver_choice(const Solver_options& options, bool for_paths)
 {
+  const auto any = [](const Algorithm&) { return true; };
   Solver_choice choice;
   const auto found = std::find_if(std::begin(algorithms), std::end(algorithms),
                                   [&](const Algorithm& a) { return options.algorithm == a.name; });
   if(found == std::end(algorithms))
-    throw Tool_error("unknown algorithm '" + options.algorithm + "' (use vtp, pvtp, avtp or pavtp)");
+    throw Tool_error("unknown algorithm '" + options.algorithm + "' (use " + algorithm_names(any, for_paths, "or") +
+                     ")");
+  if(for_paths && !keeps_windows(*found))
+    throw Tool_error(std::string("--algorithm ") + found->name + " keeps no windows and cannot trace paths (use " +
+                     algorithm_names(any, true, "or") + ")");
   choice.algorithm = found;
   if(found->parallel && !parallel_available)
     throw Tool_error(std::string("--algorithm ") + found->name + " needs TBB; this geodesic was built without it");
+  choice.batch_size = keeps_windows(*found) ? CGAL_ext::default_window_batch_size : CGAL_ext::default_batch_size;
 
   const auto invalid = [](const char* option, const char* expected, auto value) {
     return Tool_error(std::string(option) + " must be " + expected + ", got " + number_text(value));
+  };
+  const auto applies_to = [&](const char* option, auto wanted) {
+    return Tool_error(std::string(option) + " applies to " + algorithm_names(wanted, for_paths, "and") + " only");
   };
   if(!(options.max_distance >= 0))
     throw invalid("--max-distance", "a non-negative number", options.max_distance);
   choice.max_distance = options.max_distance;
   if(options.lambda) {
     if(!found->approximate)
-      throw Tool_error("--lambda applies to avtp and pavtp only");
+      throw applies_to("--lambda", [](const Algorithm& a) { return a.approximate; });
     if(!(*options.lambda > 0) || !std::isfinite(*options.lambda))
       throw invalid("--lambda", "a positive, finite number", *options.lambda);
     choice.lambda = *options.lambda;
   }
   if(options.threads) {
     if(!found->parallel)
-      throw Tool_error("--threads applies to pvtp and pavtp only");
+      throw applies_to("--threads", [](const Algorithm& a) { return a.parallel; });
     if(*options.threads < 1)
       throw invalid("--threads", "a positive integer", *options.threads);
     choice.threads = *options.threads;
   }
   if(options.batch_size) {
+    // the sequential MMP solvers take their windows one at a time
     if(!found->parallel && !found->approximate)
-      throw Tool_error("--batch-size applies to pvtp, avtp and pavtp only");
+      throw applies_to("--batch-size", [](const Algorithm& a) { return a.parallel || a.approximate; });
     if(*options.batch_size < 1)
       throw invalid("--batch-size", "a positive integer", *options.batch_size);
     choice.batch_size = static_cast<std::size_t>(*options.batch_size);
@@ -210,8 +267,8 @@ int effective_threads(const Solver_choice& choice)
   return choice.threads;
 }
 
-/// A source as written on the command line: a vertex id, or a face id and barycentric
-/// coordinates in the order of the face's vertices in the file.
+/// A source or a target as written on the command line: a vertex id, or a face id and
+/// barycentric coordinates in the order of the face's vertices in the file.
 struct Source
 {
   std::string text;
@@ -240,10 +297,11 @@ std::vector<std::string> split(const std::string& s, char delimiter)
   return parts;
 }
 
-Source parse_source(const std::string& text)
+/// `role` ("source" or "target") names the point in error messages.
+Source parse_source(const std::string& text, const char* role = "source")
 {
   const auto bad = [&](const std::string& why) {
-    return Tool_error("source '" + text + "': " + why);
+    return Tool_error(std::string(role) + " '" + text + "': " + why);
   };
   Source s;
   s.text = text;
@@ -273,16 +331,20 @@ Source parse_source(const std::string& text)
   return s;
 }
 
-enum class Output_format { txt, ply };
+enum class Output_format { txt, obj, ply };
 
-Output_format output_format(const std::string& path)
+/// The format of an output file, by its extension; .obj only where `obj_allowed` (paths).
+Output_format output_format(const std::string& path, bool obj_allowed = false)
 {
   const std::string ext = lowercase_extension(path);
   if(ext == ".txt")
     return Output_format::txt;
+  if(ext == ".obj" && obj_allowed)
+    return Output_format::obj;
   if(ext == ".ply")
     return Output_format::ply;
-  throw Tool_error("unknown output format '" + path + "' (use .txt or .ply)");
+  throw Tool_error("unknown output format '" + path + "' (use " + (obj_allowed ? ".txt, .obj or .ply" : ".txt or .ply") +
+                   ")");
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -413,10 +475,10 @@ Mesh soup_to_mesh(const Soup& soup)
 // ---------------------------------------------------------------------------------------------
 // Sources
 
-void check_source_range(const Source& s, const Mesh& mesh)
+void check_source_range(const Source& s, const Mesh& mesh, const char* role = "source")
 {
   const auto out_of_range = [&](const char* what, std::size_t i, std::size_t n, const char* plural) {
-    return Tool_error("source '" + s.text + "': " + what + " " + std::to_string(i) +
+    return Tool_error(std::string(role) + " '" + s.text + "': " + what + " " + std::to_string(i) +
                       " is out of range (the mesh has " + std::to_string(n) + " " + plural + ")");
   };
   if(s.vertex && *s.vertex >= mesh.number_of_vertices())
@@ -475,8 +537,10 @@ template <class LibrarySources>
 void solve(const Mesh& mesh, Distance_map distance, const LibrarySources& sources, const Solver_choice& choice,
            CGAL_ext::Geodesic_statistics& stats)
 {
-  const auto np =
-    CGAL_ext::parameters::max_distance(choice.max_distance).statistics(stats).batch_size(choice.batch_size);
+  const auto np = CGAL_ext::parameters::max_distance(choice.max_distance)
+                    .statistics(stats)
+                    .batch_size(choice.batch_size)
+                    .algorithm(choice.algorithm->library);
   if(choice.algorithm->parallel) {
     const Thread_allowance allowance(choice.threads);
     solve_with<Parallel_tag>(mesh, distance, sources, choice, np.number_of_threads(choice.threads));
@@ -508,6 +572,78 @@ Distance_map compute_distances(Mesh& mesh, const Polygons& polygons, const std::
     solve(mesh, distance, locations, choice, stats);
   }
   return distance;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Paths
+
+/// A shortest path and what it took.
+struct Path_result
+{
+  std::vector<Point> points; // from the source to the target
+  double distance = infinity; // the library's distance of the target
+  std::size_t nearest_source = 0; // among the sources, in command-line order
+  CGAL_ext::Geodesic_statistics stats;
+  double seconds_build = 0; // preparing the mesh, adding the sources and building the windows
+  double seconds_query = 0; // the distance, the nearest source and the path of the target
+};
+
+/// Builds the windows from `sources` with the chosen MMP solver and traces the path to `target`.
+template <class ConcurrencyTag>
+Path_result trace_path(const Mesh& mesh, const Polygons& polygons, const std::vector<Source>& sources,
+                       const Source& target, const Solver_choice& choice)
+{
+  typedef CGAL_ext::Surface_mesh_geodesic_paths<Mesh, ConcurrencyTag> Paths;
+  const auto location = [&](const Source& s) {
+    const Face_index f(static_cast<Mesh::size_type>(s.face));
+    return library_location(mesh, polygons[s.face], f, s.barycentric);
+  };
+  Path_result result;
+  const Stopwatch build_watch;
+  Paths paths(mesh);
+  for(const Source& s : sources) {
+    if(s.vertex)
+      paths.add_source(Vertex_index(static_cast<Mesh::size_type>(*s.vertex)));
+    else
+      paths.add_source(location(s));
+  }
+  {
+    const Thread_allowance allowance(choice.algorithm->parallel ? choice.threads : 0);
+    paths.build(CGAL_ext::parameters::max_distance(choice.max_distance)
+                  .statistics(result.stats)
+                  .batch_size(choice.batch_size)
+                  .number_of_threads(choice.algorithm->parallel ? choice.threads : 0)
+                  .algorithm(choice.algorithm->library));
+  }
+  result.seconds_build = build_watch.seconds();
+
+  const Stopwatch query_watch;
+  const auto query = [&](const auto& point) {
+    result.distance = paths.distance(point);
+    if(!(result.distance < infinity))
+      throw Tool_error("target '" + target.text +
+                       "' is not reached by any source (it lies in another connected component" +
+                       (choice.max_distance < infinity ? " or beyond --max-distance)" : ")"));
+    result.nearest_source = paths.nearest_source(point);
+    paths.shortest_path_points(point, std::back_inserter(result.points));
+  };
+  if(target.vertex)
+    query(Vertex_index(static_cast<Mesh::size_type>(*target.vertex)));
+  else
+    query(location(target));
+  result.seconds_query = query_watch.seconds();
+  if(result.points.empty() || result.nearest_source >= sources.size())
+    throw Tool_error("internal error: no path to target '" + target.text + "' at distance " +
+                     number_text(result.distance) + "; please report it");
+  return result;
+}
+
+double polyline_length(const std::vector<Point>& points)
+{
+  double length = 0;
+  for(std::size_t i = 1; i < points.size(); ++i)
+    length += std::sqrt(CGAL::squared_distance(points[i - 1], points[i]));
+  return length;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -577,13 +713,116 @@ double peak_rss_mb()
   return double(usage.ru_maxrss) / 1024.; // kilobytes on Linux
 }
 
+/// One point of a polyline, full precision.
+std::string point_text(const Point& p)
+{
+  char text[96];
+  std::snprintf(text, sizeof(text), "%.17g %.17g %.17g", p.x(), p.y(), p.z());
+  return text;
+}
+
+/// One `x y z` line per point.
+bool write_path_txt(std::ostream& os, const std::vector<Point>& points)
+{
+  for(const Point& p : points)
+    os << point_text(p) << "\n";
+  return bool(os);
+}
+
+/// `v` lines and one `l` line through them (none for a single point: a line needs two).
+bool write_path_obj(std::ostream& os, const std::vector<Point>& points)
+{
+  os << "# geodesic path from the geodesic tool, from the source to the target\n";
+  for(const Point& p : points)
+    os << "v " << point_text(p) << "\n";
+  if(points.size() >= 2) {
+    os << "l";
+    for(std::size_t i = 1; i <= points.size(); ++i)
+      os << " " << i;
+    os << "\n";
+  }
+  return bool(os);
+}
+
+/// ASCII PLY: the points, and an edge between consecutive ones.
+bool write_path_ply(std::ostream& os, const std::vector<Point>& points)
+{
+  const std::size_t edges = points.empty() ? 0 : points.size() - 1;
+  os << "ply\n"
+     << "format ascii 1.0\n"
+     << "comment geodesic path from the geodesic tool, from the source to the target\n"
+     << "element vertex " << points.size() << "\n"
+     << "property double x\n"
+     << "property double y\n"
+     << "property double z\n"
+     << "element edge " << edges << "\n"
+     << "property int vertex1\n"
+     << "property int vertex2\n"
+     << "end_header\n";
+  for(const Point& p : points)
+    os << point_text(p) << "\n";
+  for(std::size_t i = 0; i < edges; ++i)
+    os << i << " " << i + 1 << "\n";
+  return bool(os);
+}
+
 // ---------------------------------------------------------------------------------------------
-// The subcommand
+// Statistics
+
+/// What the library reports of a solver run, as `key=value` lines; the MMP family adds its own.
+void write_solver_stats(std::ostream& s, const Solver_choice& choice, const CGAL_ext::Geodesic_statistics& stats)
+{
+  s << "seconds_setup=" << stats.seconds_setup << "\n"
+    << "seconds_solve=" << stats.seconds_solve << "\n"
+    << "seconds_selection=" << stats.seconds_selection << "\n"
+    << "seconds_propagation=" << stats.seconds_propagation << "\n"
+    << "seconds_merge=" << stats.seconds_merge << "\n"
+    << "windows_created=" << stats.windows_created << "\n"
+    << "peak_windows=" << stats.peak_windows << "\n"
+    << "lists_propagated=" << stats.lists_propagated << "\n"
+    << "wavefront_resets=" << stats.wavefront_resets << "\n";
+  if(keeps_windows(*choice.algorithm))
+    s << "windows_propagated=" << stats.windows_propagated << "\n"
+      << "windows_stored=" << stats.windows_stored << "\n"
+      << "stored_window_bytes=" << stats.stored_window_bytes << "\n"
+      << "seconds_organization=" << stats.seconds_organization << "\n"
+      << "seconds_clipping=" << stats.seconds_clipping << "\n"
+      << "seconds_pushing=" << stats.seconds_pushing << "\n";
+}
+
+/// The first lines of --stats: the solver, the mesh and the reading.
+void write_input_stats(std::ostream& s, const Solver_choice& choice, const Mesh& mesh, std::size_t sources,
+                       double seconds_read)
+{
+  s << "algorithm=" << choice.algorithm->name << "\n";
+  if(choice.algorithm->parallel)
+    s << "threads=" << effective_threads(choice) << "\n";
+  if(choice.algorithm->approximate)
+    s << "lambda=" << number_text(choice.lambda) << "\n";
+  s << "vertices=" << mesh.number_of_vertices() << "\n"
+    << "faces=" << mesh.number_of_faces() << "\n"
+    << "sources=" << sources << "\n"
+    << "seconds_read=" << seconds_read << "\n";
+}
+
+// ---------------------------------------------------------------------------------------------
+// The subcommands
+
+/// The mesh of the file, checked, and how long reading it took.
+Mesh read_mesh(const std::string& path, Soup& soup, double& seconds)
+{
+  const Stopwatch read_watch;
+  soup = read_soup(path);
+  check_soup(soup);
+  Mesh mesh = soup_to_mesh(soup);
+  seconds = read_watch.seconds();
+  return mesh;
+}
 
 int run_distances(const Distances_options& options)
 {
   // Validate the command line before the (possibly long) reading and solving.
-  const Solver_choice choice = solver_choice(options);
+  const Solver_choice choice = solver_choice(options.solver, false);
   std::vector<Source> sources;
   for(const std::string& text : options.sources)
     sources.push_back(parse_source(text));
@@ -591,11 +830,9 @@ int run_distances(const Distances_options& options)
   if(!options.output.empty())
     format = output_format(options.output);
 
-  const Stopwatch read_watch;
-  const Soup soup = read_soup(options.mesh);
-  check_soup(soup);
-  Mesh mesh = soup_to_mesh(soup);
-  const double seconds_read = read_watch.seconds();
+  Soup soup;
+  double seconds_read = 0;
+  Mesh mesh = read_mesh(options.mesh, soup, seconds_read);
   for(const Source& s : sources)
     check_source_range(s, mesh);
 
@@ -613,56 +850,100 @@ int run_distances(const Distances_options& options)
 
   if(options.stats) {
     std::ostringstream s;
-    s << "algorithm=" << choice.algorithm->name << "\n";
-    if(choice.algorithm->parallel)
-      s << "threads=" << effective_threads(choice) << "\n";
-    if(choice.algorithm->approximate)
-      s << "lambda=" << number_text(choice.lambda) << "\n";
-    s << "vertices=" << mesh.number_of_vertices() << "\n"
-      << "faces=" << mesh.number_of_faces() << "\n"
-      << "sources=" << sources.size() << "\n"
-      << "seconds_read=" << seconds_read << "\n"
-      << "seconds_setup=" << stats.seconds_setup << "\n"
-      << "seconds_solve=" << stats.seconds_solve << "\n"
-      << "seconds_selection=" << stats.seconds_selection << "\n"
-      << "seconds_propagation=" << stats.seconds_propagation << "\n"
-      << "seconds_merge=" << stats.seconds_merge << "\n"
-      << "windows_created=" << stats.windows_created << "\n"
-      << "peak_windows=" << stats.peak_windows << "\n"
-      << "lists_propagated=" << stats.lists_propagated << "\n"
-      << "wavefront_resets=" << stats.wavefront_resets << "\n"
-      << "peak_rss_mb=" << peak_rss_mb() << "\n"
+    write_input_stats(s, choice, mesh, sources.size(), seconds_read);
+    write_solver_stats(s, choice, stats);
+    s << "peak_rss_mb=" << peak_rss_mb() << "\n"
       << "max_distance=" << std::setprecision(17) << farthest_finite(mesh, distance) << "\n";
     std::cerr << s.str() << std::flush;
   }
   return 0;
 }
 
+int run_path(const Path_options& options)
+{
+  // Validate the command line before the (possibly long) reading and building.
+  const Solver_choice choice = solver_choice(options.solver, true);
+  std::vector<Source> sources;
+  for(const std::string& text : options.sources)
+    sources.push_back(parse_source(text));
+  const Source target = parse_source(options.target, "target");
+  std::optional<Output_format> format;
+  if(!options.output.empty())
+    format = output_format(options.output, true);
+
+  Soup soup;
+  double seconds_read = 0;
+  const Mesh mesh = read_mesh(options.mesh, soup, seconds_read);
+  for(const Source& s : sources)
+    check_source_range(s, mesh);
+  check_source_range(target, mesh, "target");
+
+  const Path_result path = choice.algorithm->parallel
+                             ? trace_path<Parallel_tag>(mesh, soup.polygons, sources, target, choice)
+                             : trace_path<CGAL::Sequential_tag>(mesh, soup.polygons, sources, target, choice);
+
+  if(!format) {
+    if(!write_path_txt(std::cout, path.points) || !std::cout.flush())
+      throw Tool_error("cannot write to the standard output");
+  } else {
+    write_atomically(options.output, [&](std::ostream& os) {
+      switch(*format) {
+      case Output_format::txt:
+        return write_path_txt(os, path.points);
+      case Output_format::obj:
+        return write_path_obj(os, path.points);
+      case Output_format::ply:
+        return write_path_ply(os, path.points);
+      }
+      return false;
+    });
+  }
+
+  if(options.stats) {
+    std::ostringstream s;
+    write_input_stats(s, choice, mesh, sources.size(), seconds_read);
+    s << "seconds_build=" << path.seconds_build << "\n"
+      << "seconds_query=" << path.seconds_query << "\n";
+    write_solver_stats(s, choice, path.stats);
+    s << "peak_rss_mb=" << peak_rss_mb() << "\n"
+      << "length=" << number_text(polyline_length(path.points)) << "\n"
+      << "distance=" << number_text(path.distance) << "\n"
+      << "points=" << path.points.size() << "\n"
+      << "nearest_source=" << path.nearest_source << "\n";
+    std::cerr << s.str() << std::flush;
+  }
+  return 0;
+}
+
+const char* const point_help = "a vertex id, or f:FACE:b0:b1:b2 (barycentric coordinates in the order of the "
+                               "face's vertices in the file)";
+
 void add_distances_command(CLI::App& app, Distances_options& options)
 {
   CLI::App* cmd = app.add_subcommand("distances", "Geodesic distance from the nearest source to every vertex");
   cmd->add_option("MESH", options.mesh, "Triangle mesh (.off, .obj or .ply); vertex ids are the file order")
     ->required();
-  cmd->add_option("--source", options.sources,
-                  "Sources, comma-separated: a vertex id, or f:FACE:b0:b1:b2 (barycentric coordinates in "
-                  "the order of the face's vertices in the file)")
+  cmd->add_option("--source", options.sources, std::string("Sources, comma-separated: ") + point_help)
     ->required()
     ->delimiter(',')
     ->allow_extra_args(false);
-  cmd->add_option("--algorithm", options.algorithm,
+  cmd->add_option("--algorithm", options.solver.algorithm,
                   "Solver: vtp (exact), pvtp (exact, parallel), avtp (approximate), pavtp (approximate, "
-                  "parallel); default: vtp");
-  cmd->add_option("--lambda", options.lambda,
+                  "parallel), mmp (exact, windows in exact order), fwp-mmp (exact, windows bucket by bucket), "
+                  "pmmp (fwp-mmp in parallel); default: vtp");
+  cmd->add_option("--lambda", options.solver.lambda,
                   "avtp and pavtp: the wavefront is reset every lambda mean edge lengths; smaller is faster "
                   "and coarser, distances are never below the exact ones; positive; default: " +
                     number_text(default_lambda));
-  cmd->add_option("--threads", options.threads,
-                  "pvtp and pavtp: number of threads, at least 1; default: all cores");
-  cmd->add_option("--batch-size", options.batch_size,
+  cmd->add_option("--threads", options.solver.threads,
+                  "pvtp, pavtp and pmmp: number of threads, at least 1; default: all cores");
+  cmd->add_option("--batch-size", options.solver.batch_size,
                   "pvtp, avtp and pavtp: window lists propagated together, at least 1 (avtp and pavtp "
                   "give the same distances for the same batch size); default: " +
-                    std::to_string(CGAL_ext::default_batch_size));
-  cmd->add_option("--max-distance", options.max_distance,
+                    std::to_string(CGAL_ext::default_batch_size) +
+                    "; pmmp: windows propagated together; default: " +
+                    std::to_string(CGAL_ext::default_window_batch_size));
+  cmd->add_option("--max-distance", options.solver.max_distance,
                   "Stop the propagation at this distance; farther vertices get inf");
   cmd->add_option("--output", options.output,
                   "Output file: .txt (one distance per line, vertex order) or .ply (mesh with a per-vertex "
@@ -670,15 +951,45 @@ void add_distances_command(CLI::App& app, Distances_options& options)
   cmd->add_flag("--stats", options.stats, "Print key=value statistics on the standard error");
 }
 
+void add_path_command(CLI::App& app, Path_options& options)
+{
+  CLI::App* cmd = app.add_subcommand("path", "Shortest geodesic path from the nearest source to a target point");
+  cmd->add_option("MESH", options.mesh, "Triangle mesh (.off, .obj or .ply); vertex ids are the file order")
+    ->required();
+  cmd->add_option("--source", options.sources, std::string("Sources, comma-separated: ") + point_help)
+    ->required()
+    ->delimiter(',')
+    ->allow_extra_args(false);
+  cmd->add_option("--target", options.target, std::string("The end of the path: ") + point_help)->required();
+  cmd->add_option("--algorithm", options.solver.algorithm,
+                  "Solver: fwp-mmp (windows bucket by bucket), mmp (windows in exact order), pmmp (fwp-mmp in "
+                  "parallel); all exact; default: fwp-mmp");
+  cmd->add_option("--threads", options.solver.threads, "pmmp: number of threads, at least 1; default: all cores");
+  cmd->add_option("--batch-size", options.solver.batch_size,
+                  "pmmp: windows propagated together, at least 1; default: " +
+                    std::to_string(CGAL_ext::default_window_batch_size));
+  cmd->add_option("--max-distance", options.solver.max_distance,
+                  "Stop the propagation at this distance; a farther target is an error");
+  cmd->add_option("--output", options.output,
+                  "Output file, the polyline from the source to the target: .txt (one 'x y z' line per point), "
+                  ".obj (v lines and one l line) or .ply (ASCII, vertices and edges); default: txt on the "
+                  "standard output");
+  cmd->add_flag("--stats", options.stats,
+                "Print key=value statistics on the standard error (length, distance, points, nearest_source "
+                "among the sources in command-line order from 0, seconds, windows)");
+}
+
 } // namespace
 
 int main(int argc, char** argv)
 {
-  CLI::App app{"Geodesic distances on triangle meshes, exact or approximate", "geodesic"};
+  CLI::App app{"Geodesic distances and shortest paths on triangle meshes", "geodesic"};
   // At most one subcommand: CLI11 then reports an unknown one as unexpected, not as missing.
   app.require_subcommand(0, 1);
   Distances_options distances;
   add_distances_command(app, distances);
+  Path_options path;
+  add_path_command(app, path);
 
   try {
     app.parse(argc, argv);
@@ -698,6 +1009,8 @@ int main(int argc, char** argv)
   try {
     if(app.got_subcommand("distances"))
       return run_distances(distances);
+    if(app.got_subcommand("path"))
+      return run_path(path);
   } catch(const CGAL_ext::Geodesic_error& e) {
     std::cerr << "error: " << e.what() << std::endl;
   } catch(const std::exception& e) {
