@@ -27,8 +27,8 @@ struct Geodesic_statistics
   double seconds_selection = 0;      ///< batched: taking vertices, resetting the wavefront; PMMP: taking windows
   double seconds_propagation = 0;    ///< batched: propagating the window lists (PMMP: the windows) of each batch
   double seconds_merge = 0;          ///< batched: distance updates and list merges
-  // The phases of the MMP family (thesis figure 3.16); sequential MMP and FWP-MMP clip each
-  // window as it is made, so their propagation includes clipping.
+  // The phases of PMMP (thesis figure 3.16, with seconds_selection and seconds_propagation);
+  // sequential MMP and FWP-MMP clip each window as it is made and report seconds_solve only.
   double seconds_organization = 0;   ///< PMMP: filing the new windows by edge
   double seconds_clipping = 0;       ///< MMP family: clipping new windows against the stored ones
   double seconds_pushing = 0;        ///< PMMP: queue and vertex updates after clipping

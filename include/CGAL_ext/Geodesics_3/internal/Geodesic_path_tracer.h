@@ -164,6 +164,8 @@ public:
       if(!(c.distance < infinity()))
         break;
       if(c.kind == Candidate::SOURCE) {
+        if(c.distance == 0 && p.kind == Surface_location::FACE)
+          return true; // the target is the source
         Surface_location s;
         s.kind = Surface_location::FACE;
         s.face = c.face;
