@@ -6,7 +6,7 @@
 // is the peak of that method alone (plus the mesh, reported separately as rss_base_mb).
 //
 //   bench_geodesics --mesh FILE --method M [--source V] [--subdivide N] [--dump FILE]
-//                   [--threads T] [--batch-size K] [--lambda L]
+//                   [--threads T] [--batch-size K] [--lambda L] [--paths N]
 //   bench_geodesics --mesh FILE --subdivide N --write OUT.off     (cache a Loop subdivision)
 //   bench_geodesics --mesh FILE --info                            (size and bounding box only)
 //
@@ -14,7 +14,10 @@
 // --threads T threads, --batch-size K lists a batch, exact), avtp (approximation(--lambda L)),
 // pavtp (approximation(L) with CGAL::Parallel_tag on T threads), smsp
 // (CGAL::Surface_mesh_shortest_path, exact), heat_direct / heat_idt (CGAL::Heat_method_3,
-// approximate), dijkstra (graph distance along the mesh edges, an upper bound).
+// approximate), dijkstra (graph distance along the mesh edges, an upper bound); mmp, fwp_mmp and
+// pmmp (CGAL_ext::Surface_mesh_geodesic_paths built with MMP, FWP-MMP, or PMMP with
+// CGAL::Parallel_tag on --threads T threads), which then time --paths N shortest path queries
+// (default 200; smsp times them too when --paths is given).
 //
 // Every time is wall-clock (std::chrono::steady_clock) and excludes reading the mesh.
 // `--dump FILE` writes the distances as raw native doubles, one per vertex in index order.
@@ -23,6 +26,7 @@
 #define CGAL_EIGEN3_ENABLED // the heat method needs CGAL's Eigen solver traits
 #endif
 
+#include <CGAL_ext/Surface_mesh_geodesic_paths.h>
 #include <CGAL_ext/geodesic_distances.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -45,9 +49,11 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <iterator>
 #include <limits>
 #include <sstream>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace {
@@ -91,10 +97,12 @@ double peak_rss_mb()
 {
   if(!msg.empty())
     std::cerr << "bench_geodesics: " << msg << "\n";
-  std::cerr << "usage: bench_geodesics --mesh FILE --method vtp|pvtp|avtp|pavtp|smsp|heat_direct|heat_idt|dijkstra\n"
+  std::cerr << "usage: bench_geodesics --mesh FILE --method vtp|pvtp|avtp|pavtp|smsp|heat_direct|heat_idt|dijkstra|\n"
+               "                                               mmp|fwp_mmp|pmmp\n"
                "                       [--source V] [--subdivide N] [--dump FILE]\n"
-               "                       [--threads T] [--batch-size K]   (pvtp, pavtp; T = 0: as many as TBB chooses)\n"
+               "                       [--threads T] [--batch-size K]   (pvtp, pavtp, pmmp; T = 0: as many as TBB chooses)\n"
                "                       [--lambda L]                     (avtp, pavtp: required)\n"
+               "                       [--paths N]                      (mmp, fwp_mmp, pmmp: default 200; smsp: default 0)\n"
                "       bench_geodesics --mesh FILE --subdivide N --write OUT.off\n"
                "       bench_geodesics --mesh FILE [--subdivide N] --info\n";
   std::exit(2);
@@ -172,7 +180,67 @@ void run_vtp(const Mesh& tm, vertex_descriptor source, const Vtp_options& o, Dis
   r.add("ns_per_window", stats.windows_created > 0 ? 1e9 * stats.seconds_solve / double(stats.windows_created) : 0.);
 }
 
-void run_smsp(const Mesh& tm, vertex_descriptor source, Distances& d, Result_line& r)
+// The targets of the path queries: `count` vertices drawn by splitmix64 from a fixed seed, so
+// that every method and every run of a mesh queries the same vertices (repeats allowed).
+std::vector<vertex_descriptor> path_targets(const Mesh& tm, std::size_t count)
+{
+  std::uint64_t state = 0x9e3779b97f4a7c15ull;
+  std::vector<vertex_descriptor> targets;
+  const std::uint64_t n = num_vertices(tm);
+  for(std::size_t i = 0; i < count; ++i) {
+    std::uint64_t z = (state += 0x9e3779b97f4a7c15ull);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+    z ^= z >> 31;
+    targets.push_back(vertex_descriptor(static_cast<Mesh::size_type>(z % n)));
+  }
+  return targets;
+}
+
+// Times one path query per target: `query(target, points)` fills `points`. Reports the median and
+// largest time of one query (ms), the mean number of points of a path, and the largest
+// |path length - distance(target)| over the bounding box diagonal (a sanity check, not timed).
+template <class Query, class Distance>
+void time_path_queries(const Mesh& tm, std::size_t count, double diagonal, Query query, Distance distance,
+                       Result_line& r)
+{
+  const std::vector<vertex_descriptor> targets = path_targets(tm, count);
+  std::vector<double> ms;
+  std::vector<Point_3> points;
+  points.reserve(4096);
+  double total_points = 0, worst_length_error = 0, total_seconds = 0;
+  std::size_t empty = 0;
+  for(vertex_descriptor t : targets) {
+    points.clear();
+    const auto tq = Clock::now();
+    query(t, points);
+    const double seconds = seconds_since(tq);
+    total_seconds += seconds;
+    ms.push_back(1e3 * seconds);
+    total_points += double(points.size());
+    if(points.empty()) {
+      ++empty;
+      continue;
+    }
+    double length = 0;
+    for(std::size_t i = 1; i < points.size(); ++i)
+      length += std::sqrt(CGAL::to_double(CGAL::squared_distance(points[i - 1], points[i])));
+    worst_length_error = std::max(worst_length_error, std::abs(length - distance(t)));
+  }
+  std::sort(ms.begin(), ms.end());
+  const std::size_t k = ms.size();
+  const double median = k == 0 ? 0. : (k % 2 ? ms[k / 2] : 0.5 * (ms[k / 2 - 1] + ms[k / 2]));
+  r.add("paths", k);
+  r.add("path_query_median_ms", median);
+  r.add("path_query_max_ms", k == 0 ? 0. : ms.back());
+  r.add("seconds_paths", total_seconds);
+  r.add("path_points_mean", k == 0 ? 0. : total_points / double(k));
+  r.add("paths_empty", empty);
+  r.add("path_length_error_over_diagonal", diagonal > 0 ? worst_length_error / diagonal : worst_length_error);
+}
+
+void run_smsp(const Mesh& tm, vertex_descriptor source, std::size_t paths, double diagonal, Distances& d,
+              Result_line& r)
 {
   typedef CGAL::Surface_mesh_shortest_path_traits<Kernel, Mesh> Traits;
   typedef CGAL::Surface_mesh_shortest_path<Traits> Shortest_path;
@@ -189,6 +257,78 @@ void run_smsp(const Mesh& tm, vertex_descriptor source, Distances& d, Result_lin
   r.add("seconds_build", build);
   r.add("seconds_query", query);
   r.add("seconds_total", build + query);
+  r.add("peak_rss_build_mb", peak_rss_mb());
+  if(paths > 0)
+    time_path_queries(
+      tm, paths, diagonal,
+      [&](vertex_descriptor v, std::vector<Point_3>& points) {
+        sp.shortest_path_points_to_source_points(v, std::back_inserter(points));
+      },
+      [&](vertex_descriptor v) { return d[v.idx()]; }, r);
+}
+
+// mmp, fwp_mmp, pmmp: CGAL_ext::Surface_mesh_geodesic_paths from one vertex, then the distance of
+// every vertex and `paths` path queries.
+template <class ConcurrencyTag>
+void run_mmp(const Mesh& tm, vertex_descriptor source, CGAL_ext::Geodesic_algorithm algorithm, int threads,
+             std::size_t batch_size, std::size_t paths, double diagonal, Distances& d, Result_line& r)
+{
+  namespace params = CGAL_ext::parameters;
+  typedef CGAL_ext::Surface_mesh_geodesic_paths<Mesh, ConcurrencyTag> Geodesic_paths;
+  constexpr bool parallel = std::is_same<ConcurrencyTag, CGAL::Parallel_tag>::value;
+  d.assign(num_vertices(tm), 0.);
+  const auto t = Clock::now();
+  Geodesic_paths gp(tm);
+  const double setup = seconds_since(t);
+  gp.add_source(source);
+  const auto tb = Clock::now();
+  if(parallel)
+    gp.build(params::number_of_threads(threads).batch_size(batch_size));
+  else
+    gp.build(params::algorithm(algorithm));
+  const double build = seconds_since(tb);
+  const double total = seconds_since(t);
+  const double rss_build = peak_rss_mb();
+  const auto td = Clock::now();
+  gp.vertex_distances(CGAL::make_property_map(d));
+  const double seconds_distances = seconds_since(td);
+  const CGAL_ext::Geodesic_statistics& stats = gp.statistics();
+  const double nv = double(num_vertices(tm));
+  const double mb = 1024.0 * 1024.0;
+  if(parallel) {
+    r.add("threads", threads);
+    r.add("batch_size", batch_size);
+  }
+  r.add("seconds_setup", setup);
+  r.add("seconds_build", build);
+  r.add("seconds_solve", stats.seconds_solve);
+  r.add("seconds_total", total);
+  r.add("seconds_distances", seconds_distances);
+  // Phases (thesis figure 3.16): PMMP fills all; sequential MMP and FWP-MMP clip each window as
+  // it is made, so their propagation includes the clipping.
+  r.add("seconds_selection", stats.seconds_selection);
+  r.add("seconds_propagation", stats.seconds_propagation);
+  r.add("seconds_organization", stats.seconds_organization);
+  r.add("seconds_clipping", stats.seconds_clipping);
+  r.add("seconds_pushing", stats.seconds_pushing);
+  r.add("seconds_merge", stats.seconds_merge);
+  r.add("windows_created", stats.windows_created);
+  r.add("windows_propagated", stats.windows_propagated);
+  r.add("windows_stored", stats.windows_stored);
+  r.add("windows_per_vertex", double(stats.windows_created) / nv);
+  r.add("windows_stored_per_vertex", double(stats.windows_stored) / nv);
+  r.add("peak_windows", stats.peak_windows);
+  r.add("peak_window_bytes", stats.peak_window_bytes);
+  r.add("peak_window_mb", double(stats.peak_window_bytes) / mb);
+  r.add("stored_window_bytes", stats.stored_window_bytes);
+  r.add("stored_window_mb", double(stats.stored_window_bytes) / mb);
+  r.add("ns_per_window", stats.windows_created > 0 ? 1e9 * stats.seconds_solve / double(stats.windows_created) : 0.);
+  r.add("peak_rss_build_mb", rss_build);
+  if(paths > 0)
+    time_path_queries(
+      tm, paths, diagonal,
+      [&](vertex_descriptor v, std::vector<Point_3>& points) { gp.shortest_path_points(v, std::back_inserter(points)); },
+      [&](vertex_descriptor v) { return d[v.idx()]; }, r);
 }
 
 template <class Mode>
@@ -363,6 +503,7 @@ int main(int argc, char* argv[])
   bool info = false;
   Vtp_options vtp_options;
   bool threads_given = false, batch_given = false, lambda_given = false;
+  long paths = -1; // -1: the method's default
   for(int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     auto value = [&]() -> std::string {
@@ -409,7 +550,11 @@ int main(int argc, char* argv[])
       vtp_options.lambda = number(to_double);
       lambda_given = true;
     }
-    else if(a == "--info")
+    else if(a == "--paths") {
+      paths = number(to_long);
+      if(paths < 0)
+        usage("--paths must be non-negative");
+    } else if(a == "--info")
       info = true;
     else if(a == "-h" || a == "--help")
       usage("");
@@ -452,13 +597,19 @@ int main(int argc, char* argv[])
     }
 
     const bool vtp_family = method == "vtp" || method == "pvtp" || method == "avtp" || method == "pavtp";
-    if(!method.empty() && !vtp_family && method != "smsp" && method != "heat_direct" &&
+    const bool mmp_family = method == "mmp" || method == "fwp_mmp" || method == "pmmp";
+    if(!method.empty() && !vtp_family && !mmp_family && method != "smsp" && method != "heat_direct" &&
        method != "heat_idt" && method != "dijkstra")
       usage("unknown method " + method);
     vtp_options.parallel = method == "pvtp" || method == "pavtp";
     vtp_options.approximate = method == "avtp" || method == "pavtp";
-    if((threads_given || batch_given) && !vtp_options.parallel)
-      usage("--threads and --batch-size are options of pvtp and pavtp");
+    if((threads_given || batch_given) && !vtp_options.parallel && method != "pmmp")
+      usage("--threads and --batch-size are options of pvtp, pavtp and pmmp");
+    if(paths >= 0 && !mmp_family && method != "smsp")
+      usage("--paths is an option of mmp, fwp_mmp, pmmp and smsp");
+    const std::size_t path_count = std::size_t(paths >= 0 ? paths : (mmp_family ? 200 : 0));
+    if(method == "pmmp" && !batch_given)
+      vtp_options.batch_size = CGAL_ext::default_window_batch_size;
     if(lambda_given && !vtp_options.approximate)
       usage("--lambda is an option of avtp and pavtp");
     if(vtp_options.approximate && !lambda_given)
@@ -477,7 +628,8 @@ int main(int argc, char* argv[])
       r.add("method", method);
     r.add("vertices", n);
     r.add("faces", num_faces(tm));
-    r.add("bbox_diagonal", bbox_diagonal(tm));
+    const double diagonal = bbox_diagonal(tm);
+    r.add("bbox_diagonal", diagonal);
     r.add("source", source_index);
     r.add("seconds_load", seconds_load);
     if(subdivide > 0)
@@ -492,7 +644,14 @@ int main(int argc, char* argv[])
     if(vtp_family)
       run_vtp(tm, source, vtp_options, d, r);
     else if(method == "smsp")
-      run_smsp(tm, source, d, r);
+      run_smsp(tm, source, path_count, diagonal, d, r);
+    else if(method == "mmp")
+      run_mmp<CGAL::Sequential_tag>(tm, source, CGAL_ext::MMP, 0, 0, path_count, diagonal, d, r);
+    else if(method == "fwp_mmp")
+      run_mmp<CGAL::Sequential_tag>(tm, source, CGAL_ext::FWP_MMP, 0, 0, path_count, diagonal, d, r);
+    else if(method == "pmmp")
+      run_mmp<CGAL::Parallel_tag>(tm, source, CGAL_ext::FWP_MMP, vtp_options.threads, vtp_options.batch_size,
+                                  path_count, diagonal, d, r);
     else if(method == "heat_direct")
       run_heat<CGAL::Heat_method_3::Direct>(tm, source, d, r);
     else if(method == "heat_idt")

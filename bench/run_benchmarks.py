@@ -13,11 +13,15 @@ a cache folder (bench/.cache by default) on first use.
 Sections (--sections, default all): main (every method against VTP, and the growth of VTP),
 table41 (VTP, PVTP, AVTP, PAVTP: thesis Table 4.1), lambda (AVTP's error and time against
 lambda: thesis figure 4.11, with a CSV and a plot), heat_vs_avtp (AVTP against the heat method at
-equal mean error: thesis Table 4.3).
+equal mean error: thesis Table 4.3), table31 (MMP, FWP-MMP, VTP and PMMP: thesis Table 3.1 and the
+phases of figure 3.16), paths (CGAL's Surface_mesh_shortest_path against FWP-MMP: build, memory
+and shortest path queries).
 
 Examples:
   python3 bench/run_benchmarks.py --quick
   python3 bench/run_benchmarks.py --sections table41,lambda,heat_vs_avtp --repeat 3
+  python3 bench/run_benchmarks.py --sections table31 --repeat 3
+  python3 bench/run_benchmarks.py --sections paths --repeat 3
   python3 bench/run_benchmarks.py --meshes armadillo,armadillo@1 --methods vtp,dijkstra
   python3 bench/run_benchmarks.py --repeat 3 --json results.json
 See bench/README.md for the meaning of every column.
@@ -53,14 +57,28 @@ DEFAULT_MESHES = ["elephant", "fandisk", "armadillo", "bunny00", "elephant@2", "
                   "bunny00@1", "armadillo@2", "bunny00@2", "armadillo@3"]
 QUICK_MESHES = ["elephant", "fandisk"]
 
-SECTIONS = ["main", "table41", "lambda", "heat_vs_avtp"]
+SECTIONS = ["main", "table41", "lambda", "heat_vs_avtp", "table31", "paths"]
 # The sections of the parallel and approximate solvers reproduce the thesis's tables on meshes of
 # about a million vertices: armadillo@3 1.66M, fandisk@4 1.66M, and bunny00@2 603k (smaller).
 DEFAULT_TABLE41_MESHES = ["bunny00@2", "armadillo@3", "fandisk@4"]
 DEFAULT_LAMBDA_MESHES = ["bunny00@2", "armadillo@3"]
 DEFAULT_HEAT_MESHES = DEFAULT_TABLE41_MESHES
+# Table 3.1 (MMP family): CGAL data meshes subdivided to 200k-1M vertices whose windows fit in
+# memory and in about 20 minutes with --repeat 3 on 2 cores: man@2 280k (VTP: 24M windows),
+# bull@3 397k (41M), armadillo@2 416k (33M). MMP keeps its windows (~70 bytes each): fandisk@3
+# (414k) and elephant@4 (711k) make 140-150M windows, 12-13 GB and 85-90 s per FWP-MMP build on
+# this machine, bunny00@2 (603k) about 110M. The phase table uses the largest mesh.
+DEFAULT_TABLE31_MESHES = ["man@2", "bull@3", "armadillo@2"]
+# Paths: near 100k vertices, where CGAL's Surface_mesh_shortest_path still runs (armadillo@1 104k).
+DEFAULT_PATHS_MESHES = ["armadillo@1"]
+DEFAULT_PATH_QUERIES = 200
+# The methods of Surface_mesh_geodesic_paths (bench_geodesics: build, distances, path queries).
+MMP_METHODS = ("mmp", "fwp_mmp", "pmmp")
+PATH_METHODS = MMP_METHODS + ("smsp",)
+THREADED_METHODS = ("pvtp", "pavtp", "pmmp")
 QUICK_SECTION_MESHES = {"table41": ["elephant", "fandisk"], "lambda": ["elephant"],
-                        "heat_vs_avtp": ["elephant", "fandisk"]}
+                        "heat_vs_avtp": ["elephant", "fandisk"], "table31": ["elephant", "fandisk"],
+                        "paths": ["elephant"]}
 # The library's default batch size (CGAL_ext::default_batch_size): sequential AVTP uses it, so
 # PAVTP gives AVTP's distances bit for bit only with this batch size.
 LIBRARY_BATCH_SIZE = 512
@@ -585,32 +603,39 @@ class Runs:
         return self.meshes[spec]
 
     @staticmethod
-    def options(method, threads=None, lam=None, batch=None):
+    def options(method, threads=None, lam=None, batch=None, paths=None):
         extra = []
-        if method in ("pvtp", "pavtp"):
+        if method in THREADED_METHODS:
             extra += ["--threads", str(threads if threads is not None else 0)]
             if batch:
                 extra += ["--batch-size", str(batch)]
         if method in ("avtp", "pavtp"):
             extra += ["--lambda", lambda_text(lam)]
+        if paths is not None and method in PATH_METHODS:
+            extra += ["--paths", str(paths)]
         return extra
 
     @staticmethod
     def describe(method, threads=None, lam=None):
         text = method
-        if method in ("pvtp", "pavtp"):
+        if method in THREADED_METHODS:
             text += " T=%s" % (threads if threads else "auto")
         if method in ("avtp", "pavtp"):
             text += " λ=%s" % lambda_label(lam)
         return text
 
-    def run(self, spec, method, threads=None, lam=None, repeat=None):
+    def run(self, spec, method, threads=None, lam=None, repeat=None, paths=None):
         """The result dict of one (possibly remembered) run, with 'cmp' (compare_to_exact against
-        VTP, for every method but VTP) and 'digest' (of the distances) when it succeeded."""
+        VTP, for every method but VTP) and 'digest' (of the distances) when it succeeded. `paths`:
+        the number of path queries of mmp, fwp_mmp, pmmp (default: the driver's, 200) and smsp
+        (default: none)."""
         repeat = repeat or self.args.repeat
         batch = self.args.batch_size if method in ("pvtp", "pavtp") else None
-        key = (spec, method, threads if method in ("pvtp", "pavtp") else None,
-               float(lam) if method in ("avtp", "pavtp") else None, batch, repeat)
+        if method in MMP_METHODS and paths is None:
+            paths = self.args.path_queries
+        key = (spec, method, threads if method in THREADED_METHODS else None,
+               float(lam) if method in ("avtp", "pavtp") else None, batch, repeat,
+               paths if method in PATH_METHODS else None)
         if key in self.memo:
             return self.memo[key]
         m = self.mesh(spec)
@@ -621,7 +646,7 @@ class Runs:
         dump = self.folder / ("run%d.bin" % self.counter)
         what = self.describe(method, threads, lam)
         log("%-14s %-18s ..." % (m["label"], what))
-        r = run_method(m["path"], method, dump, self.args, self.options(method, threads, lam, batch), repeat)
+        r = run_method(m["path"], method, dump, self.args, self.options(method, threads, lam, batch, paths), repeat)
         r["what"] = what
         if r["status"] == "ok":
             r["digest"] = file_digest(dump)
@@ -647,7 +672,7 @@ class Runs:
         """VTP's distances on `spec` (None when VTP failed), run once."""
         if spec not in self.exact:
             r = self.run(spec, "vtp", repeat=self.args.repeat)
-            key = (spec, "vtp", None, None, None, self.args.repeat)
+            key = (spec, "vtp", None, None, None, self.args.repeat, None)
             self.exact[spec] = (read_dump(self.dumps[key], self.mesh(spec)["vertices"])
                                 if r["status"] == "ok" else None)
         return self.exact[spec]
@@ -1050,6 +1075,219 @@ def heat_text_table(rows, args):
             "is the closest to the heat method's without being above it.\n\n%s\n"
             % (args.bisection_steps, args.lambda_min, args.lambda_max, markdown_table(header, out)))
 
+# --------------------------------------------------------------------------------------------
+# The MMP family (thesis chapter 3): Table 3.1 (MMP, FWP-MMP, VTP, PMMP), the phases of PMMP
+# (figure 3.16), and CGAL's Surface_mesh_shortest_path against FWP-MMP for paths.
+
+MMP_LABEL = {"mmp": "MMP", "fwp_mmp": "FWP-MMP", "pmmp": "PMMP", "smsp": "SMSP", "vtp": "VTP"}
+
+
+def check_paths(label, r, warnings):
+    """Warns when path queries returned empty paths, or paths whose length is not the distance."""
+    if not r or r["status"] != "ok" or not r.get("paths"):
+        return
+    if r.get("paths_empty"):
+        warnings.append("%s: %s returned %d empty paths out of %d" % (label, r["what"], r["paths_empty"], r["paths"]))
+    e = r.get("path_length_error_over_diagonal")
+    if e is not None and e > EXACT_AGREEMENT:
+        warnings.append("%s: %s: a path's length differs from the distance of its target by %.3g of the "
+                        "diagonal (a library bug)" % (label, r["what"], e))
+
+
+def check_mmp_run(runs, label, r, warnings):
+    check_exact(runs, label, r, warnings, r["what"] if r else "")
+    check_paths(label, r, warnings)
+
+
+def table31_section(specs, runs, args, warnings):
+    """Table 3.1: MMP, FWP-MMP, VTP and PMMP on meshes of 200k-1M vertices."""
+    threads = args.table31_threads
+    rows = []
+    for spec, m in usable_meshes(specs, runs, warnings):
+        label = m["label"]
+        row = {"mesh": label, "spec": spec, "vertices": m["vertices"]}
+        row["vtp"] = runs.run(spec, "vtp")
+        row["mmp"] = runs.run(spec, "mmp")
+        row["fwp_mmp"] = runs.run(spec, "fwp_mmp")
+        row["pmmp"] = {t: runs.run(spec, "pmmp", threads=t) for t in threads}
+        for r in [row["mmp"], row["fwp_mmp"]] + [row["pmmp"][t] for t in threads]:
+            check_mmp_run(runs, label, r, warnings)
+        row["pmmp_identical"] = all(
+            check_identical(runs, spec, label, row["pmmp"][threads[0]], row["pmmp"][t], warnings,
+                            "PMMP's distances must not depend on the number of threads")
+            for t in threads[1:])
+        runs.release(spec)
+        rows.append(row)
+    return rows
+
+
+def max_diff_cell(r):
+    if r is None:
+        return "—"
+    if r["status"] != "ok":
+        return r["status"]
+    c = r.get("cmp")
+    return fmt(c["max_diff_over_diagonal"], ".2e") if c else "—"
+
+
+def count_cell(r, key):
+    v = run_value(r, key)
+    return fmt(v, ",") if v is not None else run_cell(r, key)
+
+
+def table31_text(rows, args):
+    threads = args.table31_threads
+    t_max = max(threads)
+    # Time
+    header = ["mesh", "V", "MMP s", "FWP-MMP s", "VTP s"] + ["PMMP T=%d s" % t for t in threads]
+    header += ["FWP-MMP × MMP", "FWP-MMP / VTP", "PMMP T=%d × FWP-MMP" % t_max]
+    if len(threads) > 1:
+        header.append("PMMP T=%d × T=%d" % (t_max, min(threads)))
+    out = []
+    for row in rows:
+        mmp, fwp, vtp = (run_value(row[k], "seconds_total") for k in ("mmp", "fwp_mmp", "vtp"))
+        pm = {t: run_value(row["pmmp"][t], "seconds_total") for t in threads}
+        line = [row["mesh"], "{:,}".format(row["vertices"])]
+        line += [run_cell(row[k], "seconds_total") for k in ("mmp", "fwp_mmp", "vtp")]
+        line += [run_cell(row["pmmp"][t], "seconds_total") for t in threads]
+        line += [fmt(ratio(mmp, fwp), ".2f"), fmt(ratio(fwp, vtp), ".2f"), fmt(ratio(fwp, pm[t_max]), ".2f")]
+        if len(threads) > 1:
+            line.append(fmt(ratio(pm[min(threads)], pm[t_max]), ".2f"))
+        out.append(line)
+    text = ("### Table 3.1: time (seconds) of MMP, FWP-MMP, VTP and PMMP, and their ratios\n\n"
+            "Times are `seconds_total` (mesh cache + build; VTP: mesh cache + solve). "
+            "FWP-MMP × MMP = MMP s / FWP-MMP s (speedup of the buckets over the heap); "
+            "FWP-MMP / VTP = FWP-MMP s / VTP s (> 1: VTP is faster); "
+            "PMMP T=%d × FWP-MMP = FWP-MMP s / PMMP T=%d s.\n\n%s\n" % (t_max, t_max, markdown_table(header, out)))
+
+    # Windows, memory, checks
+    header = ["mesh", "windows MMP", "windows FWP-MMP", "windows PMMP T=%d" % t_max, "windows VTP",
+              "propagated MMP", "propagated FWP-MMP", "propagated PMMP T=%d" % t_max,
+              "stored FWP-MMP", "stored/V", "stored MB FWP-MMP",
+              "RSS MMP MB", "RSS FWP-MMP MB", "RSS VTP MB"] + ["RSS PMMP T=%d MB" % t for t in threads]
+    header += ["MMP err/diag", "FWP-MMP err/diag", "PMMP err/diag", "PMMP T=%s same" % "=".join(map(str, threads))]
+    out = []
+    for row in rows:
+        p = row["pmmp"][t_max]
+        line = [row["mesh"], count_cell(row["mmp"], "windows_created"), count_cell(row["fwp_mmp"], "windows_created"),
+                count_cell(p, "windows_created"), count_cell(row["vtp"], "windows_created"),
+                count_cell(row["mmp"], "windows_propagated"), count_cell(row["fwp_mmp"], "windows_propagated"),
+                count_cell(p, "windows_propagated"), count_cell(row["fwp_mmp"], "windows_stored"),
+                run_cell(row["fwp_mmp"], "windows_stored_per_vertex", ".1f"),
+                run_cell(row["fwp_mmp"], "stored_window_mb", ".0f")]
+        line += [run_cell(row[k], "peak_rss_mb", ".0f") for k in ("mmp", "fwp_mmp", "vtp")]
+        line += [run_cell(row["pmmp"][t], "peak_rss_mb", ".0f") for t in threads]
+        line += [max_diff_cell(row["mmp"]), max_diff_cell(row["fwp_mmp"])]
+        worst = [row["pmmp"][t]["cmp"]["max_diff_over_diagonal"] for t in threads
+                 if row["pmmp"][t]["status"] == "ok" and row["pmmp"][t].get("cmp")]
+        line.append(fmt(max(worst), ".2e") if worst else "—")
+        ok = all(row["pmmp"][t]["status"] == "ok" for t in threads)
+        line.append(("yes" if row["pmmp_identical"] else "NO") if ok and len(threads) > 1 else "—")
+        out.append(line)
+    text += ("\n### Table 3.1: windows created, propagated and stored, peak resident memory (MB) and checks\n\n"
+             "err/diag: the largest |distance − VTP's| over the vertices divided by the bounding box diagonal "
+             "(all exact: above 1e-9 is a bug). PMMP same: bit-identical distances for every thread count.\n\n"
+             "%s\n" % markdown_table(header, out))
+
+    # Path queries after the build
+    header = ["mesh", "method", "paths", "query median ms", "query max ms", "points/path", "length err/diag"]
+    out = []
+    for row in rows:
+        for k, r in [("mmp", row["mmp"]), ("fwp_mmp", row["fwp_mmp"])] + [("pmmp", row["pmmp"][t]) for t in threads]:
+            name = MMP_LABEL[k] + (" T=%d" % run_value(r, "threads") if k == "pmmp" and run_value(r, "threads") else "")
+            out.append([row["mesh"], name, run_cell(r, "paths", "d"), run_cell(r, "path_query_median_ms"),
+                        run_cell(r, "path_query_max_ms"), run_cell(r, "path_points_mean", ".1f"),
+                        run_cell(r, "path_length_error_over_diagonal", ".1e")])
+    text += ("\n### Table 3.1: shortest path queries after the build (%s vertices drawn with a fixed seed)\n\n%s\n"
+             % (args.path_queries, markdown_table(header, out)))
+
+    # Phases of PMMP (thesis figure 3.16) on the largest mesh
+    done = [row for row in rows if any(row["pmmp"][t]["status"] == "ok" for t in threads)]
+    if done:
+        row = max(done, key=lambda r: r["vertices"])
+        header = ["mesh", "PMMP", "selection+pushing s", "propagation s", "organization s", "clipping s", "other s",
+                  "total (solve) s", "selection+pushing %", "propagation %", "organization %", "clipping %"]
+        out = []
+        for t in threads:
+            r = row["pmmp"][t]
+            solve = run_value(r, "seconds_solve")
+            sel, push = run_value(r, "seconds_selection"), run_value(r, "seconds_pushing")
+            phases = [None if sel is None or push is None else sel + push] + [
+                run_value(r, k) for k in ("seconds_propagation", "seconds_organization", "seconds_clipping")]
+            other = solve - sum(phases) if solve is not None and None not in phases else None
+            out.append([row["mesh"], "T=%d" % t] + [fmt(x) for x in phases] + [fmt(other), run_cell(r, "seconds_solve")]
+                       + [fmt(percent(ratio(x, solve)), ".1f") for x in phases])
+        text += ("\n### Phases of PMMP on %s (thesis figure 3.16; seconds, and %% of the solve time)\n\n"
+                 "Each phase is the median over the runs of its own time, so the phases need not add up to the "
+                 "median total; `other`: the solve time outside the four phases (sources, final statistics).\n\n%s\n"
+                 % (row["mesh"], markdown_table(header, out)))
+    return text
+
+
+def paths_section(specs, runs, args, warnings):
+    """CGAL's Surface_mesh_shortest_path against FWP-MMP: build, memory, path queries."""
+    rows = []
+    for spec, m in usable_meshes(specs, runs, warnings):
+        label = m["label"]
+        row = {"mesh": label, "spec": spec, "vertices": m["vertices"]}
+        row["vtp"] = runs.run(spec, "vtp")
+        if args.smsp_max_vertices and m["vertices"] > args.smsp_max_vertices:
+            row["smsp"] = {"status": "skip", "reason": "> %d vertices" % args.smsp_max_vertices}
+            log("%-14s smsp skipped (%d vertices > --smsp-max-vertices %d)"
+                % (label, m["vertices"], args.smsp_max_vertices))
+        else:
+            row["smsp"] = runs.run(spec, "smsp", paths=args.path_queries)
+            check_mmp_run(runs, label, row["smsp"], warnings)
+        row["fwp_mmp"] = runs.run(spec, "fwp_mmp")
+        check_mmp_run(runs, label, row["fwp_mmp"], warnings)
+        runs.release(spec)
+        rows.append(row)
+    return rows
+
+
+def paths_text(rows, args):
+    header = ["mesh", "V", "method", "build s", "peak RSS MB", "windows created", "windows stored", "stored MB",
+              "path query median ms", "path query max ms", "points/path", "err/diag", "length err/diag"]
+    out = []
+    for row in rows:
+        for k in ("smsp", "fwp_mmp", "vtp"):
+            r = row[k]
+            build = "seconds_build" if k == "smsp" else "seconds_total"
+            line = [row["mesh"], "{:,}".format(row["vertices"]), MMP_LABEL[k] + (" (distances only)" if k == "vtp" else ""),
+                    run_cell(r, build), run_cell(r, "peak_rss_mb", ".0f")]
+            if k == "smsp":
+                line += ["—", "—", "—"]
+            else:
+                line += [count_cell(r, "windows_created"),
+                         "—" if k == "vtp" else count_cell(r, "windows_stored"),
+                         "—" if k == "vtp" else run_cell(r, "stored_window_mb", ".0f")]
+            if k == "vtp":
+                line += ["—"] * 5
+            else:
+                line += [run_cell(r, "path_query_median_ms"), run_cell(r, "path_query_max_ms"),
+                         run_cell(r, "path_points_mean", ".1f"), max_diff_cell(r),
+                         run_cell(r, "path_length_error_over_diagonal", ".1e")]
+            out.append(line)
+    text = ("### Paths: CGAL's Surface_mesh_shortest_path (SMSP) against FWP-MMP\n\n"
+            "build: SMSP's constructor + `build_sequence_tree`; FWP-MMP's constructor + `build()`; VTP (distances "
+            "only, no paths): its whole call. Path queries: %d vertices drawn with a fixed seed, the same for "
+            "both; one query is `shortest_path_points_to_source_points` (SMSP) or `shortest_path_points` "
+            "(FWP-MMP). err/diag: the largest |distance − VTP's| over the vertices, over the bounding box "
+            "diagonal.\n\n%s\n" % (args.path_queries, markdown_table(header, out)))
+    header = ["mesh", "SMSP build / FWP-MMP build", "SMSP RSS / FWP-MMP RSS", "SMSP median query / FWP-MMP",
+              "SMSP max query / FWP-MMP", "FWP-MMP build / VTP"]
+    out = []
+    for row in rows:
+        s, f, v = row["smsp"], row["fwp_mmp"], row["vtp"]
+        out.append([row["mesh"],
+                    fmt(ratio(run_value(s, "seconds_build"), run_value(f, "seconds_total")), ".2f"),
+                    fmt(ratio(run_value(s, "peak_rss_mb"), run_value(f, "peak_rss_mb")), ".2f"),
+                    fmt(ratio(run_value(s, "path_query_median_ms"), run_value(f, "path_query_median_ms")), ".2f"),
+                    fmt(ratio(run_value(s, "path_query_max_ms"), run_value(f, "path_query_max_ms")), ".2f"),
+                    fmt(ratio(run_value(f, "seconds_total"), run_value(v, "seconds_total")), ".2f")])
+    text += "\n### Paths: ratios (> 1: FWP-MMP is faster or smaller)\n\n%s\n" % markdown_table(header, out)
+    return text
+
 
 def strip_runs(obj):
     """A JSON-friendly copy (float keys to strings)."""
@@ -1115,6 +1353,12 @@ def main():
     p.add_argument("--bisection-steps", type=int, default=6,
                    help="AVTP vs heat: bisection steps after the two ends, so at most 2 + this many AVTP runs "
                         "per heat variant (default: %(default)s)")
+    p.add_argument("--table31-meshes", help="meshes of Table 3.1 (default: %s)" % ",".join(DEFAULT_TABLE31_MESHES))
+    p.add_argument("--table31-threads", default="1,2",
+                   help="Table 3.1: PMMP's thread counts; the ratios use the largest (default: %(default)s)")
+    p.add_argument("--paths-meshes", help="meshes of the paths section (default: %s)" % ",".join(DEFAULT_PATHS_MESHES))
+    p.add_argument("--path-queries", type=int, default=DEFAULT_PATH_QUERIES,
+                   help="Table 3.1 and paths: shortest path queries after each build (default: %(default)s)")
     p.add_argument("--quick", action="store_true", help="elephant and fandisk (elephant only for the lambda curve), 1 repeat")
     p.add_argument("--json", help="also write every number to this file")
     args = p.parse_args()
@@ -1138,6 +1382,11 @@ def main():
     table41_meshes = section_meshes(args.table41_meshes, DEFAULT_TABLE41_MESHES, QUICK_SECTION_MESHES["table41"])
     lambda_meshes = section_meshes(args.lambda_meshes, DEFAULT_LAMBDA_MESHES, QUICK_SECTION_MESHES["lambda"])
     heat_meshes = section_meshes(args.heat_meshes, DEFAULT_HEAT_MESHES, QUICK_SECTION_MESHES["heat_vs_avtp"])
+    table31_meshes = section_meshes(args.table31_meshes, DEFAULT_TABLE31_MESHES, QUICK_SECTION_MESHES["table31"])
+    paths_meshes = section_meshes(args.paths_meshes, DEFAULT_PATHS_MESHES, QUICK_SECTION_MESHES["paths"])
+    args.table31_threads = [int(x) for x in number_list(args.table31_threads, int, "--table31-threads", p)]
+    if args.path_queries < 0:
+        p.error("--path-queries must be non-negative")
     args.table41_threads = [int(x) for x in number_list(args.table41_threads, int, "--table41-threads", p)]
     args.table41_lambdas = number_list(args.table41_lambdas, float, "--table41-lambdas", p)
     args.lambdas = number_list(args.lambdas, float, "--lambdas", p)
@@ -1209,6 +1458,14 @@ def main():
             rows = heat_section(heat_meshes, runs, args, warnings)
             print(heat_text_table(rows, args))
             report["heat_vs_avtp"] = rows
+        if "table31" in sections:
+            rows = table31_section(table31_meshes, runs, args, warnings)
+            print(table31_text(rows, args))
+            report["table31"] = rows
+        if "paths" in sections:
+            rows = paths_section(paths_meshes, runs, args, warnings)
+            print(paths_text(rows, args))
+            report["paths"] = rows
 
     if warnings:
         print("### Warnings\n")
