@@ -138,7 +138,7 @@ public:
   ///         coordinate or a degenerate triangle
   template <class NamedParameters = parameters::Default_named_parameters_type>
   explicit Surface_mesh_geodesic_paths(const TriangleMesh& tm, const NamedParameters& np = parameters::default_values())
-    : m_tm(tm)
+    : m_cache(std::make_unique<Geodesics_3::internal::Mesh_cache>())
   {
     using CGAL::parameters::choose_parameter;
     using CGAL::parameters::get_parameter;
@@ -147,10 +147,10 @@ public:
                              get_const_property_map(CGAL::vertex_point, tm));
     const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
     const auto fim = CGAL::get_initialized_face_index_map(tm, np);
-    Geodesics_3::internal::build_mesh_cache(tm, m_vpm, vim, fim, m_cache);
-    m_vertex_of_index.resize(m_cache.number_of_vertices);
-    m_face_of_index.resize(m_cache.number_of_faces);
-    m_halfedge_of_index.resize(m_cache.number_of_halfedges());
+    Geodesics_3::internal::build_mesh_cache(tm, m_vpm, vim, fim, *m_cache);
+    m_vertex_of_index.resize(m_cache->number_of_vertices);
+    m_face_of_index.resize(m_cache->number_of_faces);
+    m_halfedge_of_index.resize(m_cache->number_of_halfedges());
     for(vertex_descriptor v : vertices(tm)) {
       m_vertex_of_index[std::size_t(get(vim, v))] = v;
     }
@@ -177,7 +177,7 @@ public:
   std::size_t add_source(vertex_descriptor v)
   {
     Geodesics_3::internal::Source_point s;
-    s.vertex = m_vim(v);
+    s.vertex = checked_vertex_index(m_vim(v), "source");
     return add(s);
   }
   /// adds a source at a point of a face.
@@ -212,7 +212,7 @@ public:
   void clear_sources()
   {
     m_sources.clear();
-    m_solver.reset();
+    forget_build();
   }
   /// @}
 
@@ -260,15 +260,13 @@ public:
     using CGAL::parameters::get_parameter;
     // (CGAL::Parallel_if_available_tag is CGAL::Parallel_tag when TBB is linked)
     constexpr bool parallel = std::is_same<ConcurrencyTag, CGAL::Parallel_tag>::value;
-    m_solver.reset();
-    m_tracer.reset();
     if(m_sources.empty())
       throw Geodesic_error("no source was given");
     const Geodesic_algorithm algorithm = choose_parameter(get_parameter(np, CGAL::internal_np::algorithm), FWP_MMP);
     if(algorithm != MMP && algorithm != FWP_MMP)
       throw Geodesic_error("Surface_mesh_geodesic_paths builds with MMP or FWP_MMP only, got algorithm " +
                            std::to_string(int(algorithm)));
-    auto solver = std::make_unique<Geodesics_3::internal::MMP_solver>(m_cache);
+    auto solver = std::make_unique<Geodesics_3::internal::MMP_solver>(*m_cache);
     for(const auto& s : m_sources)
       solver->add_source(s);
     solver->set_max_distance(choose_parameter(get_parameter(np, internal_np::max_distance),
@@ -282,13 +280,17 @@ public:
     if(!(batch > 0))
       throw Geodesic_error("batch size must be positive, got " + std::to_string(batch));
     solver->set_batch_size(static_cast<std::size_t>(batch));
+    // The parameters are valid: the previous result goes now, so that two sets of windows are
+    // never held at once.
+    forget_build();
     if constexpr(parallel)
       solver->set_parallel();
     Geodesics_3::internal::run_solver<parallel>(*solver, int(threads));
+    auto tracer = std::make_unique<Geodesics_3::internal::Geodesic_path_tracer>(*solver);
     m_statistics = solver->statistics();
     m_statistics.seconds_setup = m_seconds_setup;
     m_solver = std::move(solver);
-    m_tracer = std::make_unique<Geodesics_3::internal::Geodesic_path_tracer>(*m_solver);
+    m_tracer = std::move(tracer);
     Geodesic_statistics* stats =
       choose_parameter(get_parameter(np, internal_np::statistics), static_cast<Geodesic_statistics*>(nullptr));
     if(stats)
@@ -314,8 +316,8 @@ public:
     return FT(tracer().distance(locate(p), source));
   }
   /// \param v a vertex
-  /// \return the index of the nearest source of `v` (in the order sources were added; the first
-  ///         of equal sources), or `no_source`
+  /// \return the index of the nearest source of `v` (in the order sources were added; of duplicated
+  ///         sources the first; of different sources at the same distance, either), or `no_source`
   std::size_t nearest_source(vertex_descriptor v) const
   {
     const int s = built().nearest_sources()[std::size_t(checked(v))];
@@ -390,11 +392,16 @@ private:
   std::size_t add(Geodesics_3::internal::Source_point s)
   {
     // checked here, so that the error names the source being added
-    s = Geodesics_3::internal::normalized_source(m_cache, s);
+    s = Geodesics_3::internal::normalized_source(*m_cache, s);
     m_sources.push_back(s);
-    m_solver.reset();
-    m_tracer.reset();
+    forget_build();
     return m_sources.size() - 1;
+  }
+
+  void forget_build()
+  {
+    m_tracer.reset(); // it refers to the solver
+    m_solver.reset();
   }
 
   const Geodesics_3::internal::MMP_solver& built() const
@@ -409,7 +416,18 @@ private:
     return *m_tracer;
   }
 
-  int checked(vertex_descriptor v) const { return tracer().locate_vertex(m_vim(v)).vertex; }
+  int checked(vertex_descriptor v) const
+  {
+    built();
+    return checked_vertex_index(m_vim(v), "target");
+  }
+  int checked_vertex_index(int i, const char* what) const
+  {
+    if(i < 0 || std::size_t(i) >= m_cache->number_of_vertices)
+      throw Geodesic_error(std::string(what) + " vertex " + std::to_string(i) + " is out of range (the mesh has " +
+                           std::to_string(m_cache->number_of_vertices) + " vertices)");
+    return i;
+  }
   Location locate(vertex_descriptor v) const { return tracer().locate_vertex(m_vim(v)); }
   Location locate(const Face_location& p) const
   {
@@ -454,11 +472,11 @@ private:
     return p;
   }
 
-  const TriangleMesh& m_tm;
   VertexPointMap m_vpm;
   std::function<int(vertex_descriptor)> m_vim;
   std::function<int(face_descriptor)> m_fim;
-  Geodesics_3::internal::Mesh_cache m_cache;
+  // On the heap, so that the solver's and tracer's references survive a move of this object.
+  std::unique_ptr<Geodesics_3::internal::Mesh_cache> m_cache;
   std::vector<vertex_descriptor> m_vertex_of_index;
   std::vector<face_descriptor> m_face_of_index;
   std::vector<halfedge_descriptor> m_halfedge_of_index;

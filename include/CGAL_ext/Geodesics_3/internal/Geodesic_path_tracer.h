@@ -164,7 +164,7 @@ public:
       if(!(c.distance < infinity()))
         break;
       if(c.kind == Candidate::SOURCE) {
-        if(c.distance == 0 && p.kind == Surface_location::FACE)
+        if(c.distance <= snap * m_mesh.mean_edge_length)
           return true; // the target is the source
         Surface_location s;
         s.kind = Surface_location::FACE;

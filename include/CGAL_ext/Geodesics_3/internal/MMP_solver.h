@@ -22,7 +22,6 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
-#include <sstream>
 #include <utility>
 #include <vector>
 
@@ -61,8 +60,8 @@ struct Vertex_update
 };
 
 /// What the queue holds: a window (with the version it had when queued) or a pseudo-source
-/// vertex. Ties of distance are broken by vertex then version, never by address, so that the
-/// order is the same from run to run.
+/// vertex. Comparisons never look at addresses: the heap's operations, and so the order of
+/// equal keys, are the same from run to run.
 struct Queue_item
 {
   Edge_window* window;
@@ -324,7 +323,7 @@ private:
 
   // ---- sequential MMP and FWP-MMP: each window is clipped into its edge as soon as it is made ----
 
-  void take(double key, const Queue_item& item)
+  void take(const Queue_item& item)
   {
     if(item.window) {
       ++m_statistics.windows_propagated;
@@ -339,7 +338,6 @@ private:
     } else {
       emit_from_vertex(item.vertex);
     }
-    (void)key;
     insert_new_windows_now();
     if((++m_taken & 1023) == 0)
       note_live_windows();
@@ -363,7 +361,7 @@ private:
         continue;
       if(top.first > m_max_distance)
         break;
-      take(top.first, top.second);
+      take(top.second);
     }
   }
 
@@ -376,7 +374,7 @@ private:
         return;
       for(const auto& e : bucket)
         if(!is_stale(e.first, e.second) && e.first <= m_max_distance)
-          take(e.first, e.second);
+          take(e.second);
     }
   }
 
@@ -624,13 +622,13 @@ private:
     Edge_window* w = m_edge[e];
     double cut[4];
     int winner[3];
+    while(w && w->geometry.b1 <= c.b0) {
+      before = w;
+      w = w->next;
+    }
+    Edge_window* const last_before_overlap = before; // not changed below: the second pass starts here
     while(w && !pieces.empty()) {
       Window& s = w->geometry;
-      if(s.b1 <= c.b0) {
-        before = w;
-        w = w->next;
-        continue;
-      }
       if(s.b0 >= c.b1)
         break;
       const int m = compare_on_overlap(s, c, std::max(s.b0, c.b0), std::min(s.b1, c.b1), cut, winner);
@@ -685,8 +683,8 @@ private:
       return;
 
     // The new window's pieces fill gaps between stored windows: link each where it belongs.
-    before = nullptr;
-    w = m_edge[e];
+    before = last_before_overlap;
+    w = before ? before->next : m_edge[e];
     for(const auto& iv : pieces) {
       while(w && w->geometry.b0 < iv.first) {
         before = w;
