@@ -527,6 +527,7 @@ private:
 
   // Takes a window across the face its rays enter: up to two children on the other edges of
   // the face, and a distance for the apex. Reads the window and the vertex distances only.
+  // The children are trimmed by their edge's end vertices when they are clipped into it.
   void propagate(Propagation_output& out) const
   {
     out.number_of_children = 0;
@@ -542,7 +543,6 @@ private:
     double p;
     const double via = distance_to_apex(w, crossing, f.apex_x, f.apex_y, p);
     out.apex = Vertex_update{m_mesh.apex(h), ew.source, via};
-    const double d_apex = std::min(m_distance[m_mesh.apex(h)], via);
     Child_edge to_ac, to_cb;
     child_edges(m_mesh, h, to_ac, to_cb);
     const int g_ac = m_mesh.opposite(Mesh_cache::prev(h)); // runs from A to C
@@ -550,14 +550,12 @@ private:
     Window child;
     if(g_ac >= 0) {
       const double hi = std::min(w.b1, crossing);
-      if(hi > w.b0 && make_child(w, w.b0, hi, to_ac, m_min_window_length, child) &&
-         keep_window(child, g_ac, d_from, d_apex))
+      if(hi > w.b0 && make_child(w, w.b0, hi, to_ac, m_min_window_length, child))
         out.children[out.number_of_children++] = New_window{child, g_ac, ew.source};
     }
     if(g_cb >= 0) {
       const double lo = std::max(w.b0, crossing);
-      if(w.b1 > lo && make_child(w, lo, w.b1, to_cb, m_min_window_length, child) &&
-         keep_window(child, g_cb, d_apex, d_to))
+      if(w.b1 > lo && make_child(w, lo, w.b1, to_cb, m_min_window_length, child))
         out.children[out.number_of_children++] = New_window{child, g_cb, ew.source};
     }
   }
@@ -642,7 +640,6 @@ private:
           changed = true;
         }
       }
-      drop_short(pieces);
       Edge_window* after = w->next;
       if(!changed) {
         before = w;

@@ -64,9 +64,10 @@ public:
 
   void push(double d, const Payload& v)
   {
-    // Far beyond any wavefront the order hardly matters; cap the number of buckets.
-    const double index = std::min(std::floor(d / m_width), double(max_buckets));
-    const std::size_t i = index > 0 ? std::size_t(index) : 0;
+    // Far beyond any wavefront the order hardly matters; cap the number of buckets. (A cast
+    // rounds a non-negative quotient down, without a call to floor.)
+    const double q = d / m_width;
+    const std::size_t i = q > 0 ? (q < double(max_buckets) ? std::size_t(q) : max_buckets) : 0;
     if(i >= m_buckets.size())
       m_buckets.resize(i + 1);
     m_buckets[i].emplace_back(d, v);
