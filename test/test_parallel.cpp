@@ -4,6 +4,8 @@
 #define CGAL_EXT_TEST_NO_ORACLE
 #include "test_support.h"
 
+#include <CGAL_ext/Surface_mesh_geodesic_paths.h>
+
 namespace {
 
 using namespace test_support;
@@ -317,6 +319,87 @@ TEST(Parallel, bad_parameters_throw)
   expect_error([&] { solve<CGAL::Parallel_tag>(m, source, number_of_threads(-1)); }, "threads");
   expect_error([&] { solve<CGAL::Parallel_tag>(m, source, batch_size(0)); }, "batch size");
   expect_error([&] { solve(m, source, approximation(8.).batch_size(0)); }, "batch size");
+}
+
+// ---------------------------------------------------------------------------------------------
+// PMMP (Surface_mesh_geodesic_paths and geodesic_distances with CGAL::Parallel_tag): for a given
+// batch size, the same windows whatever the number of threads, so bit-identical distances (at
+// vertices and at face points), nearest sources and paths. The mesh is small (2.8k vertices)
+// because this also runs under ThreadSanitizer.
+
+typedef CGAL_ext::Surface_mesh_geodesic_paths<Mesh, CGAL::Parallel_tag> Parallel_paths;
+
+struct Pmmp_answers
+{
+  std::vector<double> vertex_distances, function_distances, point_distances;
+  std::vector<std::size_t> sources;
+  std::vector<std::vector<Parallel_paths::Path_point>> paths;
+  std::size_t windows = 0;
+};
+
+TEST(Parallel_paths, pmmp_is_identical_for_every_thread_count_and_matches_vtp)
+{
+  const Mesh& m = test_mesh("elephant");
+  const double tolerance = 1e-12 * bbox_diagonal(m);
+  const std::size_t nf = m.number_of_faces();
+  const std::vector<Vertex> vertex_sources = {Vertex(0), Vertex(m.number_of_vertices() / 2)};
+  const std::vector<Face_location> face_sources = {location(nf / 3, 0.2, 0.3), location(2 * nf / 3, 0., 0.4)};
+  std::vector<Face_location> all_sources;
+  for(Vertex v : vertex_sources)
+    all_sources.push_back(corner_location(m, v));
+  all_sources.insert(all_sources.end(), face_sources.begin(), face_sources.end());
+  const std::vector<double> vtp = solve(m, all_sources);
+  const std::vector<Vertex> vertex_targets = spread_vertices(m, 25, 7);
+  std::vector<Face_location> point_targets;
+  for(std::size_t i = 0; i < 25; ++i)
+    point_targets.push_back(i % 2 ? location((i * nf) / 25 + 3, 0.3, 0.25) : location((i * nf) / 25 + 1, 0., 0.35));
+
+  auto run = [&](int threads, std::size_t batch) {
+    Pmmp_answers a;
+    Parallel_paths p(m);
+    p.add_sources(vertex_sources);
+    p.add_sources(face_sources);
+    CGAL_ext::Geodesic_statistics stats;
+    p.build(number_of_threads(threads).batch_size(batch).statistics(stats));
+    a.windows = stats.windows_created;
+    for(Vertex v : m.vertices()) {
+      a.vertex_distances.push_back(p.distance(v));
+      a.sources.push_back(p.nearest_source(v));
+    }
+    for(const Face_location& l : point_targets) {
+      a.point_distances.push_back(p.distance(l));
+      a.sources.push_back(p.nearest_source(l));
+      a.paths.emplace_back();
+      p.shortest_path_surface_points(l, std::back_inserter(a.paths.back()));
+    }
+    for(Vertex v : vertex_targets) {
+      a.paths.emplace_back();
+      p.shortest_path_surface_points(v, std::back_inserter(a.paths.back()));
+    }
+    a.function_distances = solve<CGAL::Parallel_tag>(
+      m, all_sources, CGAL_ext::parameters::algorithm(CGAL_ext::FWP_MMP).number_of_threads(threads).batch_size(batch));
+    return a;
+  };
+
+  for(std::size_t batch : {std::size_t(1), std::size_t(64), std::size_t(1024)}) {
+    const Pmmp_answers one = run(1, batch);
+    EXPECT_LE(max_difference(one.vertex_distances, vtp), tolerance) << "batch " << batch;
+    EXPECT_LE(max_difference(one.function_distances, vtp), tolerance) << "batch " << batch;
+    for(const auto& path : one.paths)
+      EXPECT_TRUE(is_valid_path(m, path)) << "batch " << batch;
+    for(int threads : {2, 4}) {
+      const Pmmp_answers many = run(threads, batch);
+      const std::string where = "batch " + std::to_string(batch) + ", " + std::to_string(threads) + " threads";
+      EXPECT_EQ(max_difference(many.vertex_distances, one.vertex_distances), 0.) << where;
+      EXPECT_EQ(max_difference(many.function_distances, one.function_distances), 0.) << where;
+      EXPECT_EQ(max_difference(many.point_distances, one.point_distances), 0.) << where;
+      EXPECT_EQ(many.sources, one.sources) << where;
+      EXPECT_EQ(many.windows, one.windows) << where;
+      ASSERT_EQ(many.paths.size(), one.paths.size());
+      for(std::size_t i = 0; i < one.paths.size(); ++i)
+        EXPECT_TRUE(identical_paths(many.paths[i], one.paths[i])) << where << ", path " << i;
+    }
+  }
 }
 
 } // namespace

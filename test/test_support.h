@@ -1044,6 +1044,21 @@ inline double distance_at_edge_point(const Mesh& m, const std::vector<Vertex>& v
   return solve_mixed(refined, vertex_sources, face_sources)[v.idx()];
 }
 
+/// The exact distance (VTP) at a face location strictly inside its face: the distance of a vertex
+/// inserted there (the face split in three; the same surface). Throws std::logic_error when a face
+/// source lies in that face.
+inline double distance_at_face_point(const Mesh& m, const std::vector<Vertex>& vertex_sources,
+                                     const std::vector<Face_location>& face_sources, const Face_location& l)
+{
+  for(const Face_location& s : face_sources)
+    if(s.first == l.first)
+      throw std::logic_error("distance_at_face_point: a source lies in the face to split");
+  Mesh refined = m;
+  const Vertex v = refined.target(CGAL::Euler::add_center_vertex(refined.halfedge(l.first), refined));
+  refined.point(v) = location_point(m, l);
+  return solve_mixed(refined, vertex_sources, face_sources)[v.idx()];
+}
+
 /// the positions of a path's points
 template <class PathPoint>
 std::vector<Point> positions(const std::vector<PathPoint>& path)
