@@ -71,27 +71,34 @@ public:
     if(i >= m_buckets.size())
       m_buckets.resize(i + 1);
     m_buckets[i].emplace_back(d, v);
-    m_first = std::min(m_first, i);
+    if(i < m_first) {
+      forget_consumed();
+      m_first = i;
+    }
     ++m_size;
   }
   bool empty() const { return m_size == 0; }
   std::size_t size() const { return m_size; }
 
   /// Moves the entries of the lowest non-empty bucket to `out` (which is cleared first), at
-  /// most `max_count` of them.
+  /// most `max_count` of them, oldest first.
   void pop_lowest(std::vector<Entry>& out, std::size_t max_count = std::size_t(-1))
   {
     out.clear();
-    while(m_first < m_buckets.size() && m_buckets[m_first].empty())
+    while(m_first < m_buckets.size() && m_buckets[m_first].size() == m_consumed) {
+      m_buckets[m_first].clear();
+      m_consumed = 0;
       ++m_first;
+    }
     if(m_first == m_buckets.size())
       return;
     std::vector<Entry>& b = m_buckets[m_first];
-    if(b.size() <= max_count)
+    if(m_consumed == 0 && b.size() <= max_count)
       out.swap(b);
     else {
-      out.assign(b.end() - std::ptrdiff_t(max_count), b.end());
-      b.resize(b.size() - max_count);
+      const std::size_t n = std::min(max_count, b.size() - m_consumed);
+      out.assign(b.begin() + std::ptrdiff_t(m_consumed), b.begin() + std::ptrdiff_t(m_consumed + n));
+      m_consumed += n;
     }
     m_size -= out.size();
   }
@@ -99,8 +106,8 @@ public:
   void for_each(Function f) const
   {
     for(std::size_t i = m_first; i < m_buckets.size(); ++i)
-      for(const Entry& e : m_buckets[i])
-        f(e);
+      for(std::size_t k = i == m_first ? m_consumed : 0; k < m_buckets[i].size(); ++k)
+        f(m_buckets[i][k]);
   }
 
 private:
@@ -108,7 +115,17 @@ private:
   double m_width;
   std::vector<std::vector<Entry>> m_buckets;
   std::size_t m_first = 0;
+  std::size_t m_consumed = 0; // entries at the front of bucket m_first already popped
   std::size_t m_size = 0;
+
+  void forget_consumed()
+  {
+    if(m_first < m_buckets.size() && m_consumed > 0) {
+      std::vector<Entry>& b = m_buckets[m_first];
+      b.erase(b.begin(), b.begin() + std::ptrdiff_t(m_consumed));
+    }
+    m_consumed = 0;
+  }
 };
 
 typedef Bucket_queue<int> Vertex_buckets;
