@@ -8,10 +8,10 @@
 // VTP's; a path's length within 1e-9 (relative) of the target's distance and of the oracle's
 // path. Paths are compared with the oracle's polyline point by point (1e-6 of the diagonal); a
 // target with two shortest paths may get either, so only a fraction of them is required to be
-// close, while the lengths must always agree.
-//
-// The thread-count tests of PMMP (bit-identical distances and paths) are in test_parallel.cpp,
-// which is also run under ThreadSanitizer.
+// close, while the lengths must always agree. The oracle is wrong at some points of border edges
+// (see Oracle_paths in test_support.h): there the reference is VTP at a vertex inserted at the
+// point. Section 4 (PMMP: bit-identical distances and paths for every number of threads) is in
+// test_parallel.cpp, which is also run under ThreadSanitizer.
 
 #include "test_support.h"
 
@@ -263,8 +263,9 @@ TEST_P(Vertex_distances, MatchOracleAndVtp)
     std::size_t unreachable = 0;
     for(Vertex v : m.vertices())
       unreachable += std::isinf(fwp->distance(v));
-    if(s.size() == 1)
+    if(s.size() == 1) {
       EXPECT_GT(unreachable, m.number_of_vertices() / 10);
+    }
   }
 }
 
@@ -492,8 +493,9 @@ TEST_P(Face_point_distances, MatchOracle)
     if(zeros(t.second) == 2) { // a corner is the vertex
       const auto c = face_corners(m, t.first);
       for(int k = 0; k < 3; ++k)
-        if(t.second[k] == 1)
+        if(t.second[k] == 1) {
           EXPECT_EQ(max_difference({d[1]}, {fwp->distance(c[k])}), 0.) << label << ", corner of face " << t.first;
+        }
     }
     if(zeros(t.second) == 1 && !on_border_edge(m, t)) { // the same edge point seen from the face across
       const Face_location other = across(m, t);
@@ -796,7 +798,7 @@ INSTANTIATE_TEST_SUITE_P(Paths, Shortest_paths, ::testing::ValuesIn(mesh_and_sou
                          mesh_and_sources_name);
 
 // ---------------------------------------------------------------------------------------------
-// Points where the oracle cannot be trusted, or where round-off of the windows matters: points of
+// 2b. Points where the oracle cannot be trusted, or where round-off of the windows matters: points of
 // border edges (the oracle is sometimes wrong there, see Oracle_paths), and points within 1e-9
 // of a corner or 1e-10 of an edge. The reference is VTP at a vertex inserted at the point (the
 // same surface, refined).
@@ -1440,8 +1442,9 @@ TEST(Paths_edge_cases, MaxDistanceNearestSourceOfFacePoints)
   auto mmp = built<Paths>(m, s, params::algorithm(CGAL_ext::MMP).max_distance(radius));
   auto pmmp = built<Parallel_paths>(m, s, params::max_distance(radius));
   for(Vertex v : m.vertices()) // vertices do it right
-    if(full->distance(v) > radius + 1e-12 * diag)
+    if(full->distance(v) > radius + 1e-12 * diag) {
       ASSERT_EQ(fwp->nearest_source(v), Paths::no_source) << "vertex " << v;
+    }
   std::size_t beyond = 0;
   std::vector<std::string> wrong;
   for(const Face_location& t : face_targets(m, 200, 17)) {
@@ -1494,13 +1497,13 @@ TEST(Paths_edge_cases, TargetAtTheSource)
     EXPECT_TRUE(corner[0].kind == Path_point::VERTEX && corner[0].vertex == v);
     EXPECT_EQ(p.distance(Face_location(f, b)), 0.);
   }
-  // the face points: one point, or the target and the source at the same place
+  // the face points: a one-point path too, where the target is
   int index = 1;
   for(const Face_location& l : {inside, on_edge}) {
     const Point at = location_point(m, l);
     path = surface_path(p, l);
-    ASSERT_GE(path.size(), 1u) << describe_target(l);
-    EXPECT_LE(path.size(), 2u) << describe_target(l);
+    ASSERT_EQ(path.size(), 1u) << describe_target(l);
+    EXPECT_TRUE(ends_at_target(m, l, path[0])) << describe_target(l);
     EXPECT_TRUE(is_valid_path(m, path)) << describe_target(l);
     for(const Path_point& q : path)
       EXPECT_LE(distance_3(q.point, at), 1e-15 * diag) << describe_target(l);
@@ -1518,6 +1521,35 @@ TEST(Paths_edge_cases, TargetAtTheSource)
   ASSERT_NE(other.first, Mesh::null_face());
   EXPECT_LE(p.distance(other), 1e-15 * diag);
   EXPECT_EQ(p.nearest_source(other), 2u);
+}
+
+// A build() refused for a bad parameter keeps the previous build; a moved object keeps answering.
+TEST(Paths_edge_cases, RefusedBuildKeepsThePreviousOneAndMovesKeepTheBuild)
+{
+  const Mesh& m = test_mesh("elephant");
+  const Source_set s = make_sources(m, SEVERAL_SOURCES);
+  auto p = built<Paths>(m, s);
+  const std::vector<double> before = class_distances(m, *p);
+  const Face_location l = location(3000, 0.1, 0.6);
+  const std::vector<Path_point> path = surface_path(*p, l);
+  EXPECT_TRUE(throws_geodesic_error([&] { p->build(params::algorithm(CGAL_ext::VTP)); }, {"MMP"}));
+  EXPECT_TRUE(throws_geodesic_error([&] { p->build(params::max_distance(-1.)); }, {"max distance"}));
+  EXPECT_TRUE(throws_geodesic_error([&] { p->build(params::batch_size(0)); }, {"batch size"}));
+  ASSERT_TRUE(p->is_built());
+  EXPECT_EQ(max_difference(class_distances(m, *p), before), 0.);
+  EXPECT_TRUE(identical_paths(surface_path(*p, l), path));
+  Paths moved(std::move(*p));
+  p.reset();
+  ASSERT_TRUE(moved.is_built());
+  EXPECT_EQ(max_difference(class_distances(m, moved), before), 0.);
+  EXPECT_TRUE(identical_paths(surface_path(moved, l), path));
+  std::vector<Paths> several;
+  several.push_back(std::move(moved));
+  several.emplace_back(m);
+  several.back().add_source(Vertex(0));
+  several.back().build();
+  EXPECT_EQ(max_difference(class_distances(m, several.front()), before), 0.); // (moved again by the vector)
+  EXPECT_TRUE(identical_paths(surface_path(several.front(), l), path));
 }
 
 // Coordinates within round-off of a corner or an edge are that corner or edge.
