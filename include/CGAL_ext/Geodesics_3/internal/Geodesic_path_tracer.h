@@ -134,8 +134,12 @@ public:
       return m_solver.distances()[p.vertex];
     }
     const Candidate c = best_way_to(p);
+    if(!within_limit(c.distance)) {
+      nearest_source = -1;
+      return infinity();
+    }
     nearest_source = c.source;
-    return within_limit(c.distance) ? c.distance : infinity();
+    return c.distance;
   }
 
   /// The shortest path from p back to its nearest source, p first; false (and an empty path)
@@ -339,13 +343,16 @@ private:
         const double x = w.sx + (qx - w.sx) * (-w.sy) / (qy - w.sy); // where the ray to p crosses
         if(!(x >= w.b0 - tolerance && x <= w.b1 + tolerance))
           continue;
-        const double segment = norm2d(qx - std::min(std::max(x, w.b0), w.b1), qy);
-        const double d = w.sigma + norm2d(qx - w.sx, qy - w.sy);
+        // A ray just outside the window (round-off) is measured through the window's end, so
+        // that a distance is never below a real path's length.
+        const double crossing = std::min(std::max(x, w.b0), w.b1);
+        const double segment = norm2d(qx - crossing, qy);
+        const double d = crossing == x ? w.sigma + norm2d(qx - w.sx, qy - w.sy) : distance_at(w, crossing) + segment;
         if(d < best.distance) {
           best.kind = Candidate::WINDOW;
           best.distance = d;
           best.index = h;
-          best.x = std::min(std::max(x, w.b0), w.b1);
+          best.x = crossing;
           best.segment = segment;
           best.source = ew->source;
           if(d <= good_enough)

@@ -107,8 +107,8 @@ public:
     , m_nearest_source(mesh.number_of_vertices, -1)
     , m_emits(mesh.is_pseudo_source)
     , m_edge(mesh.number_of_halfedges(), nullptr)
-    , m_edge_batch(mesh.number_of_halfedges(), -1)
     , m_buckets(mesh.mean_edge_length)
+    , m_edge_batch(mesh.number_of_halfedges(), -1)
   {
     m_min_window_length = 1e-10 * mesh.mean_edge_length;
   }
