@@ -6,16 +6,9 @@
 #include <CGAL_ext/Geodesics_3/Geodesic_statistics.h>
 #include <CGAL_ext/Geodesics_3/internal/Mesh_cache.h>
 #include <CGAL_ext/Geodesics_3/internal/Sources.h>
-#include <CGAL_ext/Geodesics_3/internal/Thread_sanitizer.h>
+#include <CGAL_ext/Geodesics_3/internal/Parallel_loop.h>
 #include <CGAL_ext/Geodesics_3/internal/Vertex_queue.h>
 #include <CGAL_ext/Geodesics_3/internal/Window.h>
-
-#ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-#include <tbb/partitioner.h>
-#include <tbb/task_arena.h>
-#endif
 
 #include <algorithm>
 #include <chrono>
@@ -160,12 +153,7 @@ public:
     const auto start = std::chrono::steady_clock::now();
     if(m_sources.empty())
       throw Geodesic_error("no source was given");
-#ifdef CGAL_LINKED_WITH_TBB
-    if(m_parallel) {
-      m_pool.set_number_of_slots(std::size_t(tbb::this_task_arena::max_concurrency()));
-      m_main_slot = std::size_t(std::max(0, tbb::this_task_arena::current_thread_index()));
-    }
-#endif
+    m_main_slot = use_one_slot_per_thread(m_pool, m_parallel);
     start_from_sources();
     if(m_parallel)
       run_parallel();
@@ -415,7 +403,7 @@ private:
       // writes only its own output and its window's queued flag (each queue entry names one
       // version of a window, and only the window's current version is ever queued once).
       start = std::chrono::steady_clock::now();
-      for_each_index(n, 8, [&](std::size_t i, std::size_t) {
+      for_each_index(m_parallel, n, 8, Chunks::FIXED, m_main_slot, [&](std::size_t i, std::size_t) {
         Propagation_output& p = selected[i];
         if(p.window->version != p.version || !p.window->queued) {
           p.number_of_children = 0;
@@ -456,7 +444,7 @@ private:
       const std::size_t edges = m_active_edges.size();
       if(m_edge_outputs.size() < edges)
         m_edge_outputs.resize(edges);
-      for_each_index(edges, 1, [&](std::size_t j, std::size_t slot) {
+      for_each_index(m_parallel, edges, 1, Chunks::ADAPTIVE, m_main_slot, [&](std::size_t j, std::size_t slot) {
         for(int id = m_active_edges[j].first_child; id >= 0; id = m_child_next[std::size_t(id)])
           insert_window(child(id), slot, m_edge_outputs[j]);
       });
@@ -489,30 +477,6 @@ private:
       a.last_child = id;
     }
     m_child_next[std::size_t(id)] = -1;
-  }
-
-  // Calls f(i, pool slot) for i in [0, n): on TBB threads in PMMP, in order otherwise.
-  template <class Function>
-  void for_each_index(std::size_t n, std::size_t grain, Function f)
-  {
-#ifdef CGAL_LINKED_WITH_TBB
-    if(m_parallel && n > 1) {
-      sanitizer_release(&m_handoff);
-      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, grain),
-                        [&](const tbb::blocked_range<std::size_t>& r) {
-                          sanitizer_acquire(&m_handoff);
-                          const std::size_t slot = std::size_t(tbb::this_task_arena::current_thread_index());
-                          for(std::size_t i = r.begin(); i != r.end(); ++i)
-                            f(i, slot);
-                          sanitizer_release(&m_handback);
-                        });
-      sanitizer_acquire(&m_handback);
-      return;
-    }
-#endif
-    (void)grain;
-    for(std::size_t i = 0; i < n; ++i)
-      f(i, m_main_slot);
   }
 
   // ---- propagation and clipping, shared by the three forms ----
@@ -745,7 +709,6 @@ private:
   std::size_t m_peak_windows = 0;
   std::size_t m_taken = 0;
   Geodesic_statistics m_statistics;
-  char m_handoff = 0, m_handback = 0; // tokens for ThreadSanitizer (Thread_sanitizer.h)
 };
 
 } // namespace internal

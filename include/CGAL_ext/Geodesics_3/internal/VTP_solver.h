@@ -6,16 +6,9 @@
 #include <CGAL_ext/Geodesics_3/Geodesic_statistics.h>
 #include <CGAL_ext/Geodesics_3/internal/Mesh_cache.h>
 #include <CGAL_ext/Geodesics_3/internal/Sources.h>
-#include <CGAL_ext/Geodesics_3/internal/Thread_sanitizer.h>
+#include <CGAL_ext/Geodesics_3/internal/Parallel_loop.h>
 #include <CGAL_ext/Geodesics_3/internal/Vertex_queue.h>
 #include <CGAL_ext/Geodesics_3/internal/Window.h>
-
-#ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-#include <tbb/partitioner.h>
-#include <tbb/task_arena.h>
-#endif
 
 #include <algorithm>
 #include <array>
@@ -158,13 +151,7 @@ public:
     const auto start = std::chrono::steady_clock::now();
     if(m_sources.empty())
       throw Geodesic_error("no source was given");
-#ifdef CGAL_LINKED_WITH_TBB
-    if(m_parallel) {
-      // One pool slot per thread of the arena run() executes in.
-      m_pool.set_number_of_slots(std::size_t(tbb::this_task_arena::max_concurrency()));
-      m_main_slot = std::size_t(std::max(0, tbb::this_task_arena::current_thread_index()));
-    }
-#endif
+    m_main_slot = use_one_slot_per_thread(m_pool, m_parallel);
     for(const Source_point& s : m_sources) {
       if(s.vertex >= 0) {
         m_emits[s.vertex] = 1;
@@ -457,27 +444,10 @@ private:
 
   void propagate_tasks(std::size_t n)
   {
-#ifdef CGAL_LINKED_WITH_TBB
-    if(m_parallel) {
-      // Each task reads shared state that no task writes, and writes only itself. Chunks of a
-      // fixed size (simple_partitioner): lists are small, uniform units of work.
-      sanitizer_release(&m_handoff);
-      tbb::parallel_for(
-        tbb::blocked_range<std::size_t>(0, n, 8),
-        [this](const tbb::blocked_range<std::size_t>& r) {
-          sanitizer_acquire(&m_handoff);
-          const std::size_t slot = std::size_t(tbb::this_task_arena::current_thread_index());
-          for(std::size_t i = r.begin(); i != r.end(); ++i)
-            propagate(m_tasks[i], slot);
-          sanitizer_release(&m_handback);
-        },
-        tbb::simple_partitioner());
-      sanitizer_acquire(&m_handback);
-      return;
-    }
-#endif
-    for(std::size_t i = 0; i < n; ++i)
-      propagate(m_tasks[i], m_main_slot);
+    // Each task reads shared state that no task writes, and writes only itself. Chunks of a
+    // fixed size: lists are small, uniform units of work.
+    for_each_index(m_parallel, n, 8, Chunks::FIXED, m_main_slot,
+                   [this](std::size_t i, std::size_t slot) { propagate(m_tasks[i], slot); });
   }
 
   // Propagates every list that still holds windows, whether or not its edge was swept; used
@@ -637,7 +607,6 @@ private:
   bool m_batched = false;  // take vertices from buckets, propagate lists in batches
   std::size_t m_batch_size = 512;
   Geodesic_statistics m_statistics;
-  char m_handoff = 0, m_handback = 0; // tokens for ThreadSanitizer (Thread_sanitizer.h)
 };
 
 } // namespace internal
