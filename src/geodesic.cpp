@@ -918,15 +918,21 @@ int run_path(const Path_options& options)
 const char* const point_help = "a vertex id, or f:FACE:b0:b1:b2 (barycentric coordinates in the order of the "
                                "face's vertices in the file)";
 
-void add_distances_command(CLI::App& app, Distances_options& options)
+// The arguments every subcommand starts with: the mesh and the sources.
+template <class Sources>
+void add_mesh_and_sources(CLI::App& cmd, std::string& mesh, Sources& sources)
 {
-  CLI::App* cmd = app.add_subcommand("distances", "Geodesic distance from the nearest source to every vertex");
-  cmd->add_option("MESH", options.mesh, "Triangle mesh (.off, .obj or .ply); vertex ids are the file order")
-    ->required();
-  cmd->add_option("--source", options.sources, std::string("Sources, comma-separated: ") + point_help)
+  cmd.add_option("MESH", mesh, "Triangle mesh (.off, .obj or .ply); vertex ids are the file order")->required();
+  cmd.add_option("--source", sources, std::string("Sources, comma-separated: ") + point_help)
     ->required()
     ->delimiter(',')
     ->allow_extra_args(false);
+}
+
+void add_distances_command(CLI::App& app, Distances_options& options)
+{
+  CLI::App* cmd = app.add_subcommand("distances", "Geodesic distance from the nearest source to every vertex");
+  add_mesh_and_sources(*cmd, options.mesh, options.sources);
   cmd->add_option("--algorithm", options.solver.algorithm,
                   "Solver: vtp (exact), pvtp (exact, parallel), avtp (approximate), pavtp (approximate, "
                   "parallel), mmp (exact, windows in exact order), fwp-mmp (exact, windows bucket by bucket), "
@@ -954,12 +960,7 @@ void add_distances_command(CLI::App& app, Distances_options& options)
 void add_path_command(CLI::App& app, Path_options& options)
 {
   CLI::App* cmd = app.add_subcommand("path", "Shortest geodesic path from the nearest source to a target point");
-  cmd->add_option("MESH", options.mesh, "Triangle mesh (.off, .obj or .ply); vertex ids are the file order")
-    ->required();
-  cmd->add_option("--source", options.sources, std::string("Sources, comma-separated: ") + point_help)
-    ->required()
-    ->delimiter(',')
-    ->allow_extra_args(false);
+  add_mesh_and_sources(*cmd, options.mesh, options.sources);
   cmd->add_option("--target", options.target, std::string("The end of the path: ") + point_help)->required();
   cmd->add_option("--algorithm", options.solver.algorithm,
                   "Solver: fwp-mmp (windows bucket by bucket), mmp (windows in exact order), pmmp (fwp-mmp in "

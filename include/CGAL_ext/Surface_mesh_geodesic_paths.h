@@ -273,19 +273,14 @@ public:
                                               std::numeric_limits<double>::infinity()));
     solver->set_queue(algorithm == MMP ? Geodesics_3::internal::MMP_solver::BINARY_HEAP
                                        : Geodesics_3::internal::MMP_solver::BUCKETS);
-    const long threads = static_cast<long>(choose_parameter(get_parameter(np, internal_np::number_of_threads), 0));
-    if(threads < 0)
-      throw Geodesic_error("number of threads must be non-negative, got " + std::to_string(threads));
-    const auto batch = choose_parameter(get_parameter(np, internal_np::batch_size), default_window_batch_size);
-    if(!(batch > 0))
-      throw Geodesic_error("batch size must be positive, got " + std::to_string(batch));
-    solver->set_batch_size(static_cast<std::size_t>(batch));
+    const int threads = Geodesics_3::internal::number_of_threads_parameter(np);
+    solver->set_batch_size(Geodesics_3::internal::batch_size_parameter(np, default_window_batch_size));
     // The parameters are valid: the previous result goes now, so that two sets of windows are
     // never held at once.
     forget_build();
     if constexpr(parallel)
       solver->set_parallel();
-    Geodesics_3::internal::run_solver<parallel>(*solver, int(threads));
+    Geodesics_3::internal::run_solver<parallel>(*solver, threads);
     auto tracer = std::make_unique<Geodesics_3::internal::Geodesic_path_tracer>(*solver);
     m_statistics = solver->statistics();
     m_statistics.seconds_setup = m_seconds_setup;

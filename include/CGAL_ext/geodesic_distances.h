@@ -100,6 +100,28 @@ std::vector<Source_point> to_source_points(const TriangleMesh& tm, VIM vim, FIM 
   return points;
 }
 
+// The named parameter `batch_size`, checked, or `fallback`.
+template <class NamedParameters>
+std::size_t batch_size_parameter(const NamedParameters& np, std::size_t fallback)
+{
+  const auto batch = CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::batch_size),
+                                                        fallback);
+  if(!(batch > 0))
+    throw Geodesic_error("batch size must be positive, got " + std::to_string(batch));
+  return static_cast<std::size_t>(batch);
+}
+
+// The named parameter `number_of_threads`, checked (0: TBB's choice).
+template <class NamedParameters>
+int number_of_threads_parameter(const NamedParameters& np)
+{
+  const long threads = static_cast<long>(
+    CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::number_of_threads), 0));
+  if(threads < 0)
+    throw Geodesic_error("number of threads must be non-negative, got " + std::to_string(threads));
+  return int(threads);
+}
+
 // Runs a solver, in a task arena of `threads` threads (0: TBB's choice) when parallel: the
 // arena bounds the threads of this call only, never a process-wide setting.
 template <bool parallel, class Solver>
@@ -250,9 +272,7 @@ void geodesic_distances(const TriangleMesh& tm, VertexDistanceMap vertex_distanc
                                                    CGAL::internal_np::Param_not_found>::value;
   constexpr bool has_stop_vertices = !std::is_same<decltype(get_parameter(np, internal_np::stop_vertices)),
                                                    CGAL::internal_np::Param_not_found>::value;
-  const long threads = static_cast<long>(choose_parameter(get_parameter(np, internal_np::number_of_threads), 0));
-  if(threads < 0)
-    throw Geodesic_error("number of threads must be non-negative, got " + std::to_string(threads));
+  const int threads = Geodesics_3::internal::number_of_threads_parameter(np);
   const double max_distance = choose_parameter(get_parameter(np, internal_np::max_distance),
                                                Geodesics_3::internal::VTP_solver::infinity());
 
@@ -282,14 +302,11 @@ void geodesic_distances(const TriangleMesh& tm, VertexDistanceMap vertex_distanc
     solver.set_max_distance(max_distance);
     solver.set_queue(algorithm == MMP ? Geodesics_3::internal::MMP_solver::BINARY_HEAP
                                       : Geodesics_3::internal::MMP_solver::BUCKETS);
-    const auto batch = choose_parameter(get_parameter(np, internal_np::batch_size), default_window_batch_size);
-    if(!(batch > 0))
-      throw Geodesic_error("batch size must be positive, got " + std::to_string(batch));
-    solver.set_batch_size(static_cast<std::size_t>(batch));
+    solver.set_batch_size(Geodesics_3::internal::batch_size_parameter(np, default_window_batch_size));
     if constexpr(parallel)
       solver.set_parallel();
     const double seconds_setup = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    Geodesics_3::internal::run_solver<parallel>(solver, int(threads));
+    Geodesics_3::internal::run_solver<parallel>(solver, threads);
     finish(solver, seconds_setup);
     return;
   }
@@ -300,10 +317,7 @@ void geodesic_distances(const TriangleMesh& tm, VertexDistanceMap vertex_distanc
   solver.set_max_distance(max_distance);
   if constexpr(has_approximation)
     solver.set_approximation(double(get_parameter(np, internal_np::approximation)));
-  const auto batch = choose_parameter(get_parameter(np, internal_np::batch_size), default_batch_size);
-  if(!(batch > 0))
-    throw Geodesic_error("batch size must be positive, got " + std::to_string(batch));
-  solver.set_batch_size(static_cast<std::size_t>(batch));
+  solver.set_batch_size(Geodesics_3::internal::batch_size_parameter(np, default_batch_size));
   if constexpr(parallel)
     solver.set_parallel();
   if constexpr(has_stop_vertices) {
@@ -311,7 +325,7 @@ void geodesic_distances(const TriangleMesh& tm, VertexDistanceMap vertex_distanc
       solver.add_stop_vertex(static_cast<int>(get(vim, v)));
   }
   const double seconds_setup = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  Geodesics_3::internal::run_solver<parallel>(solver, int(threads));
+  Geodesics_3::internal::run_solver<parallel>(solver, threads);
   finish(solver, seconds_setup);
 }
 
