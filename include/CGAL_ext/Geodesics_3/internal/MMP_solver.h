@@ -216,14 +216,20 @@ private:
     return m;
   }
 
-  // What clipping new windows into one edge gives, applied to the queue and the vertices
-  // afterwards (at once when sequential, after the parallel step in PMMP).
+  // What clipping new windows gives, applied to the queue and the vertices afterwards (at once
+  // when sequential, after the parallel step in PMMP). One per thread: in PMMP each edge's
+  // share is a range of its thread's output (`Edge_result`), applied in the edges' order.
   struct Edge_output
   {
     std::vector<std::pair<double, Queue_item>> pushes;
     std::vector<Vertex_update> updates;
     std::vector<std::pair<double, double>> pieces, kept; // scratch
     std::size_t created = 0;
+  };
+  struct Edge_result
+  {
+    std::size_t slot;
+    std::size_t first_push, end_push, first_update, end_update, created;
   };
 
   // What propagating one window gives.
@@ -297,13 +303,17 @@ private:
     return key != m_distance[item.vertex] || !(key < m_emitted[item.vertex]);
   }
 
+  void apply(const Edge_output& out, const Edge_result& r)
+  {
+    for(std::size_t i = r.first_update; i < r.end_update; ++i)
+      relax(out.updates[i]);
+    for(std::size_t i = r.first_push; i < r.end_push; ++i)
+      push(out.pushes[i].first, out.pushes[i].second);
+    m_statistics.windows_created += r.created;
+  }
   void apply(Edge_output& out)
   {
-    for(const Vertex_update& u : out.updates)
-      relax(u);
-    for(const auto& p : out.pushes)
-      push(p.first, p.second);
-    m_statistics.windows_created += out.created;
+    apply(out, Edge_result{0, 0, out.pushes.size(), 0, out.updates.size(), out.created});
     out.updates.clear();
     out.pushes.clear();
     out.created = 0;
@@ -439,22 +449,34 @@ private:
       m_statistics.seconds_organization += seconds_since(start);
 
       // 4. Clipping, in parallel: one task per edge; it reads the vertex distances and writes
-      // only its edge's windows, its pool slot and its own output.
+      // only its edge's windows, and its thread's pool slot and output.
       start = std::chrono::steady_clock::now();
       const std::size_t edges = m_active_edges.size();
-      if(m_edge_outputs.size() < edges)
-        m_edge_outputs.resize(edges);
+      if(m_edge_results.size() < edges)
+        m_edge_results.resize(edges);
+      m_thread_outputs.resize(m_pool.number_of_slots());
       for_each_index(m_parallel, edges, 1, Chunks::ADAPTIVE, m_main_slot, [&](std::size_t j, std::size_t slot) {
+        Edge_output& out = m_thread_outputs[slot];
+        Edge_result r{slot, out.pushes.size(), 0, out.updates.size(), 0, out.created};
         for(int id = m_active_edges[j].first_child; id >= 0; id = m_child_next[std::size_t(id)])
-          insert_window(child(id), slot, m_edge_outputs[j]);
+          insert_window(child(id), slot, out);
+        r.end_push = out.pushes.size();
+        r.end_update = out.updates.size();
+        r.created = out.created - r.created;
+        m_edge_results[j] = r;
       });
       m_statistics.seconds_clipping += seconds_since(start);
 
       // 5. Pushing: the queue and the vertex distances, edge by edge in filing order.
       start = std::chrono::steady_clock::now();
       for(std::size_t j = 0; j < edges; ++j) {
-        apply(m_edge_outputs[j]);
+        apply(m_thread_outputs[m_edge_results[j].slot], m_edge_results[j]);
         m_edge_batch[std::size_t(m_active_edges[j].edge)] = -1;
+      }
+      for(Edge_output& out : m_thread_outputs) {
+        out.pushes.clear();
+        out.updates.clear();
+        out.created = 0;
       }
       m_active_edges.clear();
       m_new.clear();
@@ -701,7 +723,8 @@ private:
   };
   std::vector<Active_edge> m_active_edges;
   std::vector<int> m_child_next;
-  std::vector<Edge_output> m_edge_outputs;
+  std::vector<Edge_output> m_thread_outputs; // per pool slot
+  std::vector<Edge_result> m_edge_results;   // per active edge
   std::size_t m_batch_size = 1024;
   bool m_parallel = false;
   double m_max_distance = infinity();
