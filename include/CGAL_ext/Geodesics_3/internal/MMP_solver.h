@@ -219,7 +219,7 @@ private:
   // What clipping new windows gives, applied to the queue and the vertices afterwards (at once
   // when sequential, after the parallel step in PMMP). One per thread: in PMMP each edge's
   // share is a range of its thread's output (`Edge_result`), applied in the edges' order.
-  struct Edge_output
+  struct alignas(64) Edge_output // one cache line or more each: threads write their own often
   {
     std::vector<std::pair<double, Queue_item>> pushes;
     std::vector<Vertex_update> updates;
