@@ -85,17 +85,20 @@ public:
   void pop_lowest(std::vector<Entry>& out, std::size_t max_count = std::size_t(-1))
   {
     out.clear();
+    // A bucket the wavefront has passed gives its memory back: otherwise every bucket ever
+    // used would keep a buffer of its largest size (as much as all entries ever pushed).
     while(m_first < m_buckets.size() && m_buckets[m_first].size() == m_consumed) {
-      m_buckets[m_first].clear();
+      std::vector<Entry>().swap(m_buckets[m_first]);
       m_consumed = 0;
       ++m_first;
     }
     if(m_first == m_buckets.size())
       return;
     std::vector<Entry>& b = m_buckets[m_first];
-    if(m_consumed == 0 && b.size() <= max_count)
+    if(m_consumed == 0 && b.size() <= max_count) {
       out.swap(b);
-    else {
+      std::vector<Entry>().swap(b);
+    } else {
       const std::size_t n = std::min(max_count, b.size() - m_consumed);
       out.assign(b.begin() + std::ptrdiff_t(m_consumed), b.begin() + std::ptrdiff_t(m_consumed + n));
       m_consumed += n;
