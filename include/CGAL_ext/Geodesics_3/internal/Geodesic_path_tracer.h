@@ -339,7 +339,7 @@ private:
       for(const Edge_window* ew = m_solver.windows_of_edge(h); ew; ew = ew->next) {
         if(ew->halfedge != h)
           continue; // enters the face on the other side
-        const Window w = m_solver.in_frame_of(*ew, h);
+        const Window_geometry w = m_solver.in_frame_of(*ew, h);
         const double x = w.sx + (qx - w.sx) * (-w.sy) / (qy - w.sy); // where the ray to p crosses
         if(!(x >= w.b0 - tolerance && x <= w.b1 + tolerance))
           continue;

@@ -25,9 +25,9 @@ namespace internal {
 /// A window kept on an edge. The geometry is in the frame of the edge's reference half-edge
 /// (`MMP_solver::reference()`), mirrored if need be so that the pseudo-source lies below the
 /// axis: distances along the edge do not depend on the side.
-struct Edge_window
+struct alignas(64) Edge_window // one cache line
 {
-  Window geometry;
+  Window_geometry geometry;
   int halfedge;          // the half-edge whose face the window's rays enter
   int source;            // the source its paths start from (index in the order sources were added)
   std::uint32_t version; // changes whenever the window changes or dies: older queue entries are stale
@@ -39,7 +39,7 @@ struct Edge_window
 /// geometry is in the frame of `halfedge`.
 struct New_window
 {
-  Window geometry;
+  Window_geometry geometry;
   int halfedge;
   int source;
 };
@@ -194,7 +194,7 @@ public:
   const Edge_window* windows_of_edge(int h) const { return m_edge[reference(h)]; }
 
   /// A stored window in the frame of half-edge h of its edge.
-  Window in_frame_of(const Edge_window& w, int h) const
+  Window_geometry in_frame_of(const Edge_window& w, int h) const
   {
     return h == reference(h) ? w.geometry : mirrored(w.geometry, m_mesh.frame[h].length);
   }
@@ -207,9 +207,9 @@ private:
 
   // The same window seen from the other half-edge of its edge; the pseudo-source stays below
   // the axis (the frame turns by a half turn, and the window's side with it).
-  static Window mirrored(const Window& w, double length)
+  static Window_geometry mirrored(const Window_geometry& w, double length)
   {
-    Window m = w;
+    Window_geometry m = w;
     m.b0 = length - w.b1;
     m.b1 = length - w.b0;
     m.sx = length - w.sx;
@@ -259,7 +259,7 @@ private:
       } else {
         emit_face_point_windows(
           m_mesh, s, [&](int u, double d) { relax(Vertex_update{u, index, d}); },
-          [&](int g, const Window& w) { m_new.push_back(New_window{w, g, index}); });
+          [&](int g, const Window_geometry& w) { m_new.push_back(New_window{w, g, index}); });
       }
     }
     insert_new_windows_now();
@@ -273,7 +273,7 @@ private:
     m_emitted[v] = sigma;
     emit_vertex_windows(
       m_mesh, v, sigma, [&](int u, double d) { relax(Vertex_update{u, source, d}); },
-      [&](int g, const Window& w) { m_new.push_back(New_window{w, g, source}); });
+      [&](int g, const Window_geometry& w) { m_new.push_back(New_window{w, g, source}); });
   }
 
   void relax(const Vertex_update& u)
@@ -505,7 +505,7 @@ private:
 
   // Trims a window (in the frame of h) by the distances of the end vertices of h's edge and by
   // the max distance: false if nothing is left.
-  bool keep_window(Window& w, int h, double d_from, double d_to) const
+  bool keep_window(Window_geometry& w, int h, double d_from, double d_to) const
   {
     double key;
     return trim_by_edge_vertices(w, m_mesh.frame[h].length, d_from, d_to, key) && key <= m_max_distance;
@@ -520,7 +520,7 @@ private:
     out.apex.vertex = -1;
     const Edge_window& ew = *out.window;
     const int h = ew.halfedge;
-    Window w = in_frame_of(ew, h);
+    Window_geometry w = in_frame_of(ew, h);
     const double d_from = m_distance[m_mesh.source(h)], d_to = m_distance[m_mesh.target(h)];
     if(!keep_window(w, h, d_from, d_to))
       return;
@@ -533,7 +533,7 @@ private:
     child_edges(m_mesh, h, to_ac, to_cb);
     const int g_ac = m_mesh.opposite(Mesh_cache::prev(h)); // runs from A to C
     const int g_cb = m_mesh.opposite(Mesh_cache::next(h)); // runs from C to B
-    Window child;
+    Window_geometry child;
     if(g_ac >= 0) {
       const double hi = std::min(w.b1, crossing);
       if(hi > w.b0 && make_child(w, w.b0, hi, to_ac, m_min_window_length, child))
@@ -594,10 +594,10 @@ private:
     const int h = n.halfedge;
     const int e = reference(h);
     const double length = m_mesh.frame[h].length;
-    Window g = n.geometry;
+    Window_geometry g = n.geometry;
     if(!keep_window(g, h, m_distance[m_mesh.source(h)], m_distance[m_mesh.target(h)]))
       return;
-    const Window c = h == e ? g : mirrored(g, length);
+    const Window_geometry c = h == e ? g : mirrored(g, length);
 
     std::vector<std::pair<double, double>>& pieces = out.pieces; // what the new window keeps
     std::vector<std::pair<double, double>>& kept = out.kept;     // what a stored window keeps
@@ -612,7 +612,7 @@ private:
     }
     Edge_window* const last_before_overlap = before; // not changed below: the second pass starts here
     while(w && !pieces.empty()) {
-      Window& s = w->geometry;
+      Window_geometry& s = w->geometry;
       if(s.b0 >= c.b1)
         break;
       const int m = compare_on_overlap(s, c, std::max(s.b0, c.b0), std::min(s.b1, c.b1), cut, winner);
@@ -677,7 +677,6 @@ private:
       model.geometry = c;
       model.geometry.b0 = iv.first;
       model.geometry.b1 = iv.second;
-      model.geometry.next = nullptr;
       model.halfedge = h;
       model.source = n.source;
       model.queued = 1;

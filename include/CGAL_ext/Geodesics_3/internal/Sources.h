@@ -78,13 +78,12 @@ void emit_vertex_windows(const Mesh_cache& m, int v, double sigma, Relax relax, 
     if(g < 0)
       return;
     const Halfedge_frame& f = m.frame[across];
-    Window w;
+    Window_geometry w;
     w.b0 = 0;
     w.b1 = f.length;
     w.sx = f.length - f.apex_x; // g runs the other way along the same edge
     w.sy = -f.apex_y;
     w.sigma = sigma;
-    w.next = nullptr;
     add(g, w);
   });
 }
@@ -131,14 +130,13 @@ void emit_face_point_windows(const Mesh_cache& m, const Source_point& s, Relax r
       const int g = m.opposite(h);
       if(g < 0)
         continue;
-      Window w;
+      Window_geometry w;
       w.b0 = 0;
       w.b1 = f.length;
       w.sx = f.length - x;
       w.sy = -y;
       w.sigma = 0;
-      w.next = nullptr;
-      add(g, w);
+        add(g, w);
     }
   };
   for_each_face_seeing(m, s, emit_in_face);

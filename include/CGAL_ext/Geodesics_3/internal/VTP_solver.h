@@ -315,8 +315,11 @@ private:
     return trim_by_edge_vertices(w, m_mesh.frame[h].length, d_from, d_to, key) && key <= m_limit_cache;
   }
 
-  void insert_window(int h, Window w)
+  void insert_window(int h, const Window_geometry& geometry)
   {
+    Window w;
+    static_cast<Window_geometry&>(w) = geometry;
+    w.next = nullptr;
     if(keep_window(w, h, m_distance[m_mesh.source(h)], m_distance[m_mesh.target(h)])) {
       Window_chain chain;
       chain.push_back(m_pool.allocate(m_main_slot, w));
@@ -333,14 +336,14 @@ private:
     m_emitted[v] = sigma;
     m_limit_cache = limit();
     emit_vertex_windows(
-      m_mesh, v, sigma, [&](int u, double d) { relax(u, d); }, [&](int g, const Window& w) { insert_window(g, w); });
+      m_mesh, v, sigma, [&](int u, double d) { relax(u, d); }, [&](int g, const Window_geometry& w) { insert_window(g, w); });
   }
 
   void emit_from_face_point(const Source_point& s)
   {
     m_limit_cache = limit();
     emit_face_point_windows(
-      m_mesh, s, [&](int u, double d) { relax(u, d); }, [&](int g, const Window& w) { insert_window(g, w); });
+      m_mesh, s, [&](int u, double d) { relax(u, d); }, [&](int g, const Window_geometry& w) { insert_window(g, w); });
   }
 
   void take_vertex(int v)

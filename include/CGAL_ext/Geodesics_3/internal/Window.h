@@ -15,15 +15,21 @@ namespace CGAL_ext {
 namespace Geodesics_3 {
 namespace internal {
 
-/// A window: a bundle of straight shortest paths from one (pseudo-)source, unfolded into the
-/// plane, crossing the interval [b0, b1] of a half-edge h. Coordinates are in the frame of h
-/// (source vertex at the origin, target at (length, 0), the face of h above the x-axis); the
-/// pseudo-source (sx, sy) lies below or on the axis and `sigma` is its geodesic distance.
-struct Window
+/// The geometry of a window: a bundle of straight shortest paths from one (pseudo-)source,
+/// unfolded into the plane, crossing the interval [b0, b1] of a half-edge h. Coordinates are in
+/// the frame of h (source vertex at the origin, target at (length, 0), the face of h above the
+/// x-axis); the pseudo-source (sx, sy) lies below or on the axis and `sigma` is its geodesic
+/// distance.
+struct Window_geometry
 {
   double b0, b1;
   double sx, sy;
   double sigma;
+};
+
+/// A window of a list (VTP keeps its windows in lists per half-edge).
+struct Window : Window_geometry
+{
   Window* next; // next window of the same list
 };
 
@@ -31,10 +37,10 @@ struct Window
 /// a mesh are far from that range.
 inline double norm2d(double x, double y) { return std::sqrt(x * x + y * y); }
 
-inline double distance_at(const Window& w, double x) { return w.sigma + norm2d(x - w.sx, w.sy); }
+inline double distance_at(const Window_geometry& w, double x) { return w.sigma + norm2d(x - w.sx, w.sy); }
 
 /// The smallest distance the window gives to a point of its interval.
-inline double window_key(const Window& w)
+inline double window_key(const Window_geometry& w)
 {
   if(w.sx <= w.b0)
     return distance_at(w, w.b0);
@@ -49,7 +55,7 @@ inline double window_key(const Window& w)
 /// vertex of the half-edge is an initial segment and the part beaten by its target a final one.
 /// `d_from`/`d_to` are the current distances of the source/target vertex of the half-edge.
 /// Returns false when nothing is left; otherwise `key` is the window's smallest distance.
-inline bool trim_by_edge_vertices(Window& w, double length, double d_from, double d_to, double& key)
+inline bool trim_by_edge_vertices(Window_geometry& w, double length, double d_from, double d_to, double& key)
 {
   const double r2 = w.sx * w.sx + w.sy * w.sy;
   double at_b0 = distance_at(w, w.b0), at_b1 = distance_at(w, w.b1);
@@ -78,14 +84,14 @@ inline bool trim_by_edge_vertices(Window& w, double length, double d_from, doubl
 }
 
 /// Where the line from the pseudo-source to the apex (cx, cy) crosses the x-axis.
-inline double apex_crossing(const Window& w, double cx, double cy)
+inline double apex_crossing(const Window_geometry& w, double cx, double cy)
 {
   return w.sx - w.sy * (cx - w.sx) / (cy - w.sy);
 }
 
 /// Length of the shortest path from the pseudo-source through a point p of the window to the
 /// apex; `crossing` is `apex_crossing(w, ...)` and p is it clamped to the window.
-inline double distance_to_apex(const Window& w, double crossing, double cx, double cy, double& p)
+inline double distance_to_apex(const Window_geometry& w, double crossing, double cx, double cy, double& p)
 {
   if(crossing < w.b0)
     p = w.b0;
@@ -103,7 +109,7 @@ inline double distance_to_apex(const Window& w, double crossing, double cx, doub
 /// |x - s1| = |x - s0| + delta; squaring once gives alpha x + beta = 2 delta |x - s0|, and a
 /// second time a quadratic. A root of the quadratic is kept only if it solves the first
 /// equation too: squaring adds spurious roots.
-inline int equal_distance_points(const Window& w0, const Window& w1, double lo, double hi, double roots[2])
+inline int equal_distance_points(const Window_geometry& w0, const Window_geometry& w1, double lo, double hi, double roots[2])
 {
   const double delta = w0.sigma - w1.sigma;
   const double alpha = 2 * (w0.sx - w1.sx);
@@ -146,13 +152,13 @@ inline int equal_distance_points(const Window& w0, const Window& w1, double lo, 
 /// Compares two windows of the same edge on their overlap [lo, hi]: splits it at the points
 /// where they give equal distances into `n - 1` pieces (1 to 3), [cut[i], cut[i+1]], and tells
 /// which window is shorter on each (`winner[i]`: 0 for w0, 1 for w1). Returns n.
-inline int compare_on_overlap(const Window& w0, const Window& w1, double lo, double hi, double cut[4], int winner[3])
+inline int compare_on_overlap(const Window_geometry& w0, const Window_geometry& w1, double lo, double hi, double cut[4], int winner[3])
 {
   // A distance is convex along the edge: its largest value on the overlap is at an end. When
   // one window's largest value is no more than the other's smallest, no equation is solved.
   const double lo0 = distance_at(w0, lo), hi0 = distance_at(w0, hi);
   const double lo1 = distance_at(w1, lo), hi1 = distance_at(w1, hi);
-  auto smallest = [&](const Window& w, double d_lo, double d_hi) {
+  auto smallest = [&](const Window_geometry& w, double d_lo, double d_hi) {
     return (w.sx > lo && w.sx < hi) ? w.sigma - w.sy : std::min(d_lo, d_hi);
   };
   cut[0] = lo;
@@ -181,7 +187,7 @@ inline int compare_on_overlap(const Window& w0, const Window& w1, double lo, dou
 /// part of the overlap where the other one is strictly shorter, when that part is at an end of
 /// its interval (a loss strictly inside its interval would split it, and is left alone).
 /// Returns a bit set: 1 if w0 became empty, 2 if w1 did.
-inline int clip_pair(Window& w0, Window& w1)
+inline int clip_pair(Window_geometry& w0, Window_geometry& w1)
 {
   const double lo = std::max(w0.b0, w1.b0), hi = std::min(w0.b1, w1.b1);
   if(!(hi > lo))
@@ -191,7 +197,7 @@ inline int clip_pair(Window& w0, Window& w1)
   const int n = compare_on_overlap(w0, w1, lo, hi, cut, winner);
   // A window gives up the pieces the other one wins, from each end of the overlap that is an
   // end of its own interval, inwards. Returns true if nothing is left of it.
-  auto trim = [&](Window& w, int other) {
+  auto trim = [&](Window_geometry& w, int other) {
     int first = 0, last = n - 2;
     if(w.b0 == lo)
       while(first <= last && winner[first] == other)
@@ -234,8 +240,8 @@ struct Child_edge
 /// The child of `w` made of the rays through [lo, hi] of the parent edge that land on `e`:
 /// the interval is the rays' hits on `e`, the pseudo-source is moved to the child frame (where it
 /// lies below the axis). Returns false when the child is empty or shorter than `min_length`.
-inline bool make_child(const Window& w, double lo, double hi, const Child_edge& e,
-                       double min_length, Window& child)
+inline bool make_child(const Window_geometry& w, double lo, double hi, const Child_edge& e,
+                       double min_length, Window_geometry& child)
 {
   // Ray from s through (x, 0) meets the line E0 + t (E1 - E0) at
   // t = cross(s - E0, d) / cross(E1 - E0, d), with d = (x - sx, -sy).
