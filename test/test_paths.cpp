@@ -1371,18 +1371,36 @@ TEST(Paths_edge_cases, UnreachableTargets)
 
 // With max_distance, points within it keep their distances and paths, the others are at
 // +infinity and have none.
-TEST(Paths_edge_cases, MaxDistance)
+// The set-up of the max_distance tests: two sources on elephant, the unlimited build, and a
+// radius of 0.4 times the largest vertex distance.
+struct Max_distance_case
 {
   const Mesh& m = test_mesh("elephant");
   const double diag = bbox_diagonal(m);
   Source_set s;
-  s.vertices = {Vertex(100)};
-  s.faces = {location(2000, 0.2, 0.5)};
-  auto full = built<Paths>(m, s);
-  double farthest = 0;
-  for(Vertex v : m.vertices())
-    farthest = std::max(farthest, full->distance(v));
-  const double radius = 0.4 * farthest;
+  std::unique_ptr<Paths> full;
+  double radius = 0;
+
+  Max_distance_case()
+  {
+    s.vertices = {Vertex(100)};
+    s.faces = {location(2000, 0.2, 0.5)};
+    full = built<Paths>(m, s);
+    double farthest = 0;
+    for(Vertex v : m.vertices())
+      farthest = std::max(farthest, full->distance(v));
+    radius = 0.4 * farthest;
+  }
+};
+
+TEST(Paths_edge_cases, MaxDistance)
+{
+  const Max_distance_case c;
+  const Mesh& m = c.m;
+  const double diag = c.diag;
+  const Source_set& s = c.s;
+  const auto& full = c.full;
+  const double radius = c.radius;
   const double band = 1e-12 * diag;
   auto mmp = built<Paths>(m, s, params::algorithm(CGAL_ext::MMP).max_distance(radius));
   auto fwp = built<Paths>(m, s, params::max_distance(radius));
@@ -1428,16 +1446,12 @@ TEST(Paths_edge_cases, MaxDistance)
 // Beyond max_distance a face point has no nearest source, as a vertex has none.
 TEST(Paths_edge_cases, MaxDistanceNearestSourceOfFacePoints)
 {
-  const Mesh& m = test_mesh("elephant");
-  const double diag = bbox_diagonal(m);
-  Source_set s;
-  s.vertices = {Vertex(100)};
-  s.faces = {location(2000, 0.2, 0.5)};
-  auto full = built<Paths>(m, s);
-  double farthest = 0;
-  for(Vertex v : m.vertices())
-    farthest = std::max(farthest, full->distance(v));
-  const double radius = 0.4 * farthest;
+  const Max_distance_case c;
+  const Mesh& m = c.m;
+  const double diag = c.diag;
+  const Source_set& s = c.s;
+  const auto& full = c.full;
+  const double radius = c.radius;
   auto fwp = built<Paths>(m, s, params::max_distance(radius));
   auto mmp = built<Paths>(m, s, params::algorithm(CGAL_ext::MMP).max_distance(radius));
   auto pmmp = built<Parallel_paths>(m, s, params::max_distance(radius));
