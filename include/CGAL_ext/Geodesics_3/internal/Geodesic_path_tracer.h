@@ -156,13 +156,25 @@ public:
     // known: the first way that matches it is the one.
     int face_beyond = -1;
     double left = infinity();
+    int crossed = -1; // the half-edge, the place and the window of the last crossing
+    double crossed_x = 0;
+    Window_geometry crossed_window{0., 0., 0., 0., 0.};
     const std::size_t max_steps = 4 * (m_mesh.number_of_faces + m_mesh.number_of_vertices) + 16;
     for(std::size_t step = 0; step < max_steps; ++step) {
       if(p.kind == Surface_location::VERTEX && m_solver.distances()[p.vertex] == 0)
         return true; // a source vertex
       Candidate c;
-      if(face_beyond >= 0)
-        best_in_face(face_beyond, barycentric_in(face_beyond, p), c, left);
+      if(face_beyond >= 0) {
+        // The path goes on straight: through one edge of the face beyond, most often the one
+        // the last window's pseudo-source lies behind; else anywhere in that face.
+        const std::array<double, 3> b = barycentric_in(face_beyond, p);
+        const double good_enough = left + 1e-12 * (left + m_mesh.mean_edge_length);
+        const int exit = exit_halfedge(crossed, crossed_x, crossed_window);
+        if(exit < 0 || !best_through_edge(exit, b, c, good_enough)) {
+          c = Candidate();
+          best_in_face(face_beyond, b, c, left);
+        }
+      }
       if(c.kind == Candidate::NONE || c.distance > left + 1e-9 * (left + m_mesh.mean_edge_length))
         c = best_way_to(p); // the window that led here was clipped since: look everywhere
       if(!(c.distance < infinity()))
@@ -185,6 +197,9 @@ public:
         if(p.kind == Surface_location::EDGE) {
           face_beyond = Mesh_cache::face(m_mesh.opposite(c.index));
           left = c.distance - c.segment;
+          crossed = c.index;
+          crossed_x = c.x;
+          crossed_window = c.window;
         }
       }
       path.push_back(p);
@@ -240,6 +255,7 @@ private:
     int index = -1;  // WINDOW: the half-edge crossed; VERTEX: the vertex; SOURCE: in m_face_sources
     double x = 0;    // WINDOW: where, from the source of the half-edge
     double segment = 0; // WINDOW: the length from the point to the crossing
+    Window_geometry window{0., 0., 0., 0., 0.}; // WINDOW: the window, in the frame of `index`
     int face = -1;   // SOURCE: the face
     int source = -1; // the source the path starts from
   };
@@ -299,6 +315,58 @@ private:
     return best;
   }
 
+  // Updates `best` with the windows entering face(h) through the edge of h whose ray reaches the
+  // point of barycentric coordinates b (in face(h)); true once one within `good_enough` is found.
+  bool best_through_edge(int h, const std::array<double, 3>& b, Candidate& best, double good_enough) const
+  {
+    const int k = h % 3;
+    const Halfedge_frame& fr = m_mesh.frame[h];
+    const double qx = b[(k + 1) % 3] * fr.length + b[(k + 2) % 3] * fr.apex_x, qy = b[(k + 2) % 3] * fr.apex_y;
+    const double tolerance = 1e-9 * fr.length;
+    for(const Edge_window* ew = m_solver.windows_of_edge(h); ew; ew = ew->next) {
+      if(ew->halfedge != h)
+        continue; // enters the face on the other side
+      const Window_geometry w = m_solver.in_frame_of(*ew, h);
+      const double x = w.sx + (qx - w.sx) * (-w.sy) / (qy - w.sy); // where the ray to p crosses
+      if(!(x >= w.b0 - tolerance && x <= w.b1 + tolerance))
+        continue;
+      // A ray just outside the window (round-off) is measured through the window's end, so
+      // that a distance is never below a real path's length.
+      const double crossing = std::min(std::max(x, w.b0), w.b1);
+      const double segment = norm2d(qx - crossing, qy);
+      const double d = crossing == x ? w.sigma + norm2d(qx - w.sx, qy - w.sy) : distance_at(w, crossing) + segment;
+      if(d < best.distance) {
+        best.kind = Candidate::WINDOW;
+        best.distance = d;
+        best.index = h;
+        best.x = crossing;
+        best.segment = segment;
+        best.source = ew->source;
+        best.window = w;
+        if(d <= good_enough)
+          return true;
+      }
+    }
+    return false;
+  }
+
+  // After crossing half-edge h at x with the window w (in h's frame), the half-edge of the face
+  // beyond through which the straight path back to w's pseudo-source leaves that face, or -1 if
+  // it heads for the face's apex (or the pseudo-source is in the face).
+  int exit_halfedge(int h, double x, const Window_geometry& w) const
+  {
+    const int o = m_mesh.opposite(h);
+    const Halfedge_frame& f = m_mesh.frame[o];
+    // In o's frame: the crossing, the pseudo-source (turned by a half turn) and the apex.
+    const double px = f.length - x, sx = f.length - w.sx, sy = -w.sy;
+    const double cross = (f.apex_x - px) * sy - f.apex_y * (sx - px);
+    if(cross > 0)
+      return Mesh_cache::prev(o); // left of the way to the apex: the edge from the apex to o's source
+    if(cross < 0)
+      return Mesh_cache::next(o);
+    return -1;
+  }
+
   // Updates `best` with the ways to reach the point of barycentric coordinates b in face f that
   // do not start where the point is (edges and corners it lies on are skipped). A corner wins
   // only when strictly shorter than the other ways, so that ties of round-off never route a
@@ -332,34 +400,7 @@ private:
     for(int k = 0; k < 3; ++k) {
       if(b[(k + 2) % 3] <= snap)
         continue; // p lies on this edge
-      const int h = 3 * f + k;
-      const Halfedge_frame& fr = m_mesh.frame[h];
-      const double qx = b[(k + 1) % 3] * fr.length + b[(k + 2) % 3] * fr.apex_x, qy = b[(k + 2) % 3] * fr.apex_y;
-      const double tolerance = 1e-9 * fr.length;
-      for(const Edge_window* ew = m_solver.windows_of_edge(h); ew; ew = ew->next) {
-        if(ew->halfedge != h)
-          continue; // enters the face on the other side
-        const Window_geometry w = m_solver.in_frame_of(*ew, h);
-        const double x = w.sx + (qx - w.sx) * (-w.sy) / (qy - w.sy); // where the ray to p crosses
-        if(!(x >= w.b0 - tolerance && x <= w.b1 + tolerance))
-          continue;
-        // A ray just outside the window (round-off) is measured through the window's end, so
-        // that a distance is never below a real path's length.
-        const double crossing = std::min(std::max(x, w.b0), w.b1);
-        const double segment = norm2d(qx - crossing, qy);
-        const double d = crossing == x ? w.sigma + norm2d(qx - w.sx, qy - w.sy) : distance_at(w, crossing) + segment;
-        if(d < best.distance) {
-          best.kind = Candidate::WINDOW;
-          best.distance = d;
-          best.index = h;
-          best.x = crossing;
-          best.segment = segment;
-          best.source = ew->source;
-          if(d <= good_enough)
-            break;
-        }
-      }
-      if(best.kind == Candidate::WINDOW && best.distance <= good_enough)
+      if(best_through_edge(3 * f + k, b, best, good_enough))
         break;
     }
     auto first = std::lower_bound(m_face_sources.begin(), m_face_sources.end(), f,
