@@ -819,16 +819,32 @@ Mesh read_mesh(const std::string& path, Soup& soup, double& seconds)
   return mesh;
 }
 
+std::vector<Source> parse_sources(const std::vector<std::string>& texts)
+{
+  std::vector<Source> sources;
+  for(const std::string& text : texts)
+    sources.push_back(parse_source(text));
+  return sources;
+}
+
+/// Writes with `write` to the file `path`, atomically, or to the standard output when there is
+/// no path.
+void write_output(const std::string& path, const std::function<bool(std::ostream&)>& write)
+{
+  if(path.empty()) {
+    if(!write(std::cout) || !std::cout.flush())
+      throw Tool_error("cannot write to the standard output");
+  } else {
+    write_atomically(path, write);
+  }
+}
+
 int run_distances(const Distances_options& options)
 {
   // Validate the command line before the (possibly long) reading and solving.
   const Solver_choice choice = solver_choice(options.solver, false);
-  std::vector<Source> sources;
-  for(const std::string& text : options.sources)
-    sources.push_back(parse_source(text));
-  std::optional<Output_format> format;
-  if(!options.output.empty())
-    format = output_format(options.output);
+  const std::vector<Source> sources = parse_sources(options.sources);
+  const Output_format format = options.output.empty() ? Output_format::txt : output_format(options.output);
 
   Soup soup;
   double seconds_read = 0;
@@ -839,14 +855,9 @@ int run_distances(const Distances_options& options)
   CGAL_ext::Geodesic_statistics stats;
   const auto distance = compute_distances(mesh, soup.polygons, sources, choice, stats);
 
-  if(!format) {
-    if(!write_txt(std::cout, mesh, distance) || !std::cout.flush())
-      throw Tool_error("cannot write to the standard output");
-  } else if(*format == Output_format::txt) {
-    write_atomically(options.output, [&](std::ostream& os) { return write_txt(os, mesh, distance); });
-  } else {
-    write_atomically(options.output, [&](std::ostream& os) { return write_ply(os, mesh, distance); });
-  }
+  write_output(options.output, [&](std::ostream& os) {
+    return format == Output_format::ply ? write_ply(os, mesh, distance) : write_txt(os, mesh, distance);
+  });
 
   if(options.stats) {
     std::ostringstream s;
@@ -863,13 +874,9 @@ int run_path(const Path_options& options)
 {
   // Validate the command line before the (possibly long) reading and building.
   const Solver_choice choice = solver_choice(options.solver, true);
-  std::vector<Source> sources;
-  for(const std::string& text : options.sources)
-    sources.push_back(parse_source(text));
+  const std::vector<Source> sources = parse_sources(options.sources);
   const Source target = parse_source(options.target, "target");
-  std::optional<Output_format> format;
-  if(!options.output.empty())
-    format = output_format(options.output, true);
+  const Output_format format = options.output.empty() ? Output_format::txt : output_format(options.output, true);
 
   Soup soup;
   double seconds_read = 0;
@@ -882,22 +889,17 @@ int run_path(const Path_options& options)
                              ? trace_path<Parallel_tag>(mesh, soup.polygons, sources, target, choice)
                              : trace_path<CGAL::Sequential_tag>(mesh, soup.polygons, sources, target, choice);
 
-  if(!format) {
-    if(!write_path_txt(std::cout, path.points) || !std::cout.flush())
-      throw Tool_error("cannot write to the standard output");
-  } else {
-    write_atomically(options.output, [&](std::ostream& os) {
-      switch(*format) {
-      case Output_format::txt:
-        return write_path_txt(os, path.points);
-      case Output_format::obj:
-        return write_path_obj(os, path.points);
-      case Output_format::ply:
-        return write_path_ply(os, path.points);
-      }
-      return false;
-    });
-  }
+  write_output(options.output, [&](std::ostream& os) {
+    switch(format) {
+    case Output_format::txt:
+      return write_path_txt(os, path.points);
+    case Output_format::obj:
+      return write_path_obj(os, path.points);
+    case Output_format::ply:
+      return write_path_ply(os, path.points);
+    }
+    return false;
+  });
 
   if(options.stats) {
     std::ostringstream s;

@@ -138,7 +138,8 @@ public:
   ///         coordinate or a degenerate triangle
   template <class NamedParameters = parameters::Default_named_parameters_type>
   explicit Surface_mesh_geodesic_paths(const TriangleMesh& tm, const NamedParameters& np = parameters::default_values())
-    : m_cache(std::make_unique<Geodesics_3::internal::Mesh_cache>())
+    : m_tm(&tm)
+    , m_cache(std::make_unique<Geodesics_3::internal::Mesh_cache>())
   {
     using CGAL::parameters::choose_parameter;
     using CGAL::parameters::get_parameter;
@@ -150,17 +151,10 @@ public:
     Geodesics_3::internal::build_mesh_cache(tm, m_vpm, vim, fim, *m_cache);
     m_vertex_of_index.resize(m_cache->number_of_vertices);
     m_face_of_index.resize(m_cache->number_of_faces);
-    m_halfedge_of_index.resize(m_cache->number_of_halfedges());
-    for(vertex_descriptor v : vertices(tm)) {
+    for(vertex_descriptor v : vertices(tm))
       m_vertex_of_index[std::size_t(get(vim, v))] = v;
-    }
-    for(face_descriptor f : faces(tm)) {
-      const std::size_t i = std::size_t(get(fim, f));
-      m_face_of_index[i] = f;
-      halfedge_descriptor h = halfedge(f, tm);
-      for(int k = 0; k < 3; ++k, h = next(h, tm))
-        m_halfedge_of_index[3 * i + std::size_t(k)] = h;
-    }
+    for(face_descriptor f : faces(tm))
+      m_face_of_index[std::size_t(get(fim, f))] = f;
     m_vim = [vim](vertex_descriptor v) { return int(get(vim, v)); };
     m_fim = [fim](face_descriptor f) { return int(get(fim, f)); };
     m_seconds_setup = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -177,7 +171,8 @@ public:
   std::size_t add_source(vertex_descriptor v)
   {
     Geodesics_3::internal::Source_point s;
-    s.vertex = checked_vertex_index(m_vim(v), "source");
+    s.vertex = m_vim(v);
+    Geodesics_3::internal::check_vertex_index(*m_cache, s.vertex, "source");
     return add(s);
   }
   /// adds a source at a point of a face.
@@ -269,17 +264,11 @@ public:
     auto solver = std::make_unique<Geodesics_3::internal::MMP_solver>(*m_cache);
     for(const auto& s : m_sources)
       solver->add_source(s);
-    solver->set_max_distance(choose_parameter(get_parameter(np, internal_np::max_distance),
-                                              std::numeric_limits<double>::infinity()));
-    solver->set_queue(algorithm == MMP ? Geodesics_3::internal::MMP_solver::BINARY_HEAP
-                                       : Geodesics_3::internal::MMP_solver::BUCKETS);
+    Geodesics_3::internal::configure_mmp_solver<parallel>(*solver, algorithm, np);
     const int threads = Geodesics_3::internal::number_of_threads_parameter(np);
-    solver->set_batch_size(Geodesics_3::internal::batch_size_parameter(np, default_window_batch_size));
     // The parameters are valid: the previous result goes now, so that two sets of windows are
     // never held at once.
     forget_build();
-    if constexpr(parallel)
-      solver->set_parallel();
     Geodesics_3::internal::run_solver<parallel>(*solver, threads);
     auto tracer = std::make_unique<Geodesics_3::internal::Geodesic_path_tracer>(*solver);
     m_statistics = solver->statistics();
@@ -411,18 +400,7 @@ private:
     return *m_tracer;
   }
 
-  int checked(vertex_descriptor v) const
-  {
-    built();
-    return checked_vertex_index(m_vim(v), "target");
-  }
-  int checked_vertex_index(int i, const char* what) const
-  {
-    if(i < 0 || std::size_t(i) >= m_cache->number_of_vertices)
-      throw Geodesic_error(std::string(what) + " vertex " + std::to_string(i) + " is out of range (the mesh has " +
-                           std::to_string(m_cache->number_of_vertices) + " vertices)");
-    return i;
-  }
+  int checked(vertex_descriptor v) const { return tracer().locate_vertex(m_vim(v)).vertex; }
   Location locate(vertex_descriptor v) const { return tracer().locate_vertex(m_vim(v)); }
   Location locate(const Face_location& p) const
   {
@@ -455,7 +433,10 @@ private:
       return p;
     }
     if(l.kind == Location::EDGE) {
-      p.halfedge = m_halfedge_of_index[std::size_t(l.halfedge)];
+      // Half-edge 3f+k of the cache is the k-th after halfedge(f) (the cache's corner order).
+      p.halfedge = halfedge(m_face_of_index[std::size_t(l.halfedge / 3)], *m_tm);
+      for(int k = 0; k < l.halfedge % 3; ++k)
+        p.halfedge = next(p.halfedge, *m_tm);
       p.t = FT(l.t);
     } else {
       p.face = m_face_of_index[std::size_t(l.face)];
@@ -467,6 +448,7 @@ private:
     return p;
   }
 
+  const TriangleMesh* m_tm; // a pointer, so that the object can be moved
   VertexPointMap m_vpm;
   std::function<int(vertex_descriptor)> m_vim;
   std::function<int(face_descriptor)> m_fim;
@@ -474,7 +456,6 @@ private:
   std::unique_ptr<Geodesics_3::internal::Mesh_cache> m_cache;
   std::vector<vertex_descriptor> m_vertex_of_index;
   std::vector<face_descriptor> m_face_of_index;
-  std::vector<halfedge_descriptor> m_halfedge_of_index;
   std::vector<Geodesics_3::internal::Source_point> m_sources;
   std::unique_ptr<Geodesics_3::internal::MMP_solver> m_solver;
   std::unique_ptr<Geodesics_3::internal::Geodesic_path_tracer> m_tracer;

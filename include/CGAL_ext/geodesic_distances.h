@@ -23,6 +23,7 @@
 #include <array>
 #include <chrono>
 #include <iterator>
+#include <limits>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -120,6 +121,19 @@ int number_of_threads_parameter(const NamedParameters& np)
   if(threads < 0)
     throw Geodesic_error("number of threads must be non-negative, got " + std::to_string(threads));
   return int(threads);
+}
+
+// Sets up an MMP solver from the named parameters: the queue from `algorithm` (a binary heap
+// for MMP, buckets for FWP-MMP), `max_distance`, `batch_size`, and PMMP when parallel.
+template <bool parallel, class NamedParameters>
+void configure_mmp_solver(MMP_solver& solver, Geodesic_algorithm algorithm, const NamedParameters& np)
+{
+  solver.set_max_distance(CGAL::parameters::choose_parameter(
+    CGAL::parameters::get_parameter(np, internal_np::max_distance), std::numeric_limits<double>::infinity()));
+  solver.set_queue(algorithm == MMP ? MMP_solver::BINARY_HEAP : MMP_solver::BUCKETS);
+  solver.set_batch_size(batch_size_parameter(np, default_window_batch_size));
+  if constexpr(parallel)
+    solver.set_parallel();
 }
 
 // Runs a solver, in a task arena of `threads` threads (0: TBB's choice) when parallel: the
@@ -299,12 +313,7 @@ void geodesic_distances(const TriangleMesh& tm, VertexDistanceMap vertex_distanc
     Geodesics_3::internal::MMP_solver solver(cache);
     for(const auto& s : sources_in_cache)
       solver.add_source(s);
-    solver.set_max_distance(max_distance);
-    solver.set_queue(algorithm == MMP ? Geodesics_3::internal::MMP_solver::BINARY_HEAP
-                                      : Geodesics_3::internal::MMP_solver::BUCKETS);
-    solver.set_batch_size(Geodesics_3::internal::batch_size_parameter(np, default_window_batch_size));
-    if constexpr(parallel)
-      solver.set_parallel();
+    Geodesics_3::internal::configure_mmp_solver<parallel>(solver, algorithm, np);
     const double seconds_setup = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     Geodesics_3::internal::run_solver<parallel>(solver, threads);
     finish(solver, seconds_setup);

@@ -9,7 +9,6 @@
 #include <array>
 #include <cmath>
 #include <limits>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -74,43 +73,22 @@ public:
 
   /// Checks a target given by a face and barycentric coordinates, and makes it a vertex or
   /// an edge point when it lies on one.
-  Surface_location locate(int face, std::array<double, 3> b) const
+  Surface_location locate(int face, const std::array<double, 3>& coordinates) const
   {
-    if(face < 0 || std::size_t(face) >= m_mesh.number_of_faces)
-      throw Geodesic_error("target face " + std::to_string(face) + " is out of range (the mesh has " +
-                           std::to_string(m_mesh.number_of_faces) + " faces)");
-    const double sum = b[0] + b[1] + b[2];
-    if(!std::isfinite(sum) || std::abs(sum - 1.) > 1e-9 || b[0] < -1e-12 || b[1] < -1e-12 || b[2] < -1e-12) {
-      std::ostringstream msg;
-      msg.precision(17);
-      msg << "barycentric coordinates (" << b[0] << ", " << b[1] << ", " << b[2] << ") of the target in face " << face
-          << " must be non-negative and sum to 1";
-      throw Geodesic_error(msg.str());
+    const std::array<double, 3> b = checked_barycentric(m_mesh, face, coordinates, "target");
+    const int zeros = (b[0] == 0) + (b[1] == 0) + (b[2] == 0);
+    for(int k = 0; k < 3; ++k) {
+      if(zeros == 2 && b[k] > 0)
+        return Surface_location::at_vertex(m_mesh.source(3 * face + k));
+      if(zeros == 1 && b[(k + 2) % 3] == 0) { // on half-edge 3f+k
+        Surface_location p;
+        p.kind = Surface_location::EDGE;
+        p.halfedge = 3 * face + k;
+        p.t = b[(k + 1) % 3];
+        return p;
+      }
     }
-    int zeros = 0;
-    double total = 0;
-    for(double& c : b) {
-      if(c < snap)
-        c = 0, ++zeros;
-      total += c;
-    }
-    for(double& c : b)
-      c /= total;
     Surface_location p;
-    if(zeros == 2) {
-      for(int k = 0; k < 3; ++k)
-        if(b[k] > 0)
-          return Surface_location::at_vertex(m_mesh.source(3 * face + k));
-    }
-    if(zeros == 1) {
-      for(int k = 0; k < 3; ++k)
-        if(b[(k + 2) % 3] == 0) { // on half-edge 3f+k
-          p.kind = Surface_location::EDGE;
-          p.halfedge = 3 * face + k;
-          p.t = b[(k + 1) % 3];
-          return p;
-        }
-    }
     p.kind = Surface_location::FACE;
     p.face = face;
     p.barycentric = b;
@@ -119,9 +97,7 @@ public:
 
   Surface_location locate_vertex(int v) const
   {
-    if(v < 0 || std::size_t(v) >= m_mesh.number_of_vertices)
-      throw Geodesic_error("target vertex " + std::to_string(v) + " is out of range (the mesh has " +
-                           std::to_string(m_mesh.number_of_vertices) + " vertices)");
+    check_vertex_index(m_mesh, v, "target");
     return Surface_location::at_vertex(v);
   }
 
@@ -134,12 +110,8 @@ public:
       return m_solver.distances()[p.vertex];
     }
     const Candidate c = best_way_to(p);
-    if(!within_limit(c.distance)) {
-      nearest_source = -1;
-      return infinity();
-    }
-    nearest_source = c.source;
-    return c.distance;
+    nearest_source = within_limit(c.distance) ? c.source : -1;
+    return within_limit(c.distance) ? c.distance : infinity();
   }
 
   /// The shortest path from p back to its nearest source, p first; false (and an empty path)
@@ -147,9 +119,16 @@ public:
   bool trace(const Surface_location& target, std::vector<Surface_location>& path) const
   {
     path.clear();
-    int source;
-    if(!(distance(target, source) < infinity()))
-      return false;
+    // The first step is the target's distance: a vertex has it stored, a point is searched once.
+    Candidate first;
+    if(target.kind == Surface_location::VERTEX) {
+      if(!within_limit(m_solver.distances()[target.vertex]))
+        return false;
+    } else {
+      first = best_way_to(target);
+      if(!within_limit(first.distance))
+        return false;
+    }
     path.push_back(target);
     Surface_location p = target;
     // After crossing an edge the path goes on in the face beyond it, and the distance left is
@@ -163,7 +142,8 @@ public:
     for(std::size_t step = 0; step < max_steps; ++step) {
       if(p.kind == Surface_location::VERTEX && m_solver.distances()[p.vertex] == 0)
         return true; // a source vertex
-      Candidate c;
+      Candidate c = first;
+      first = Candidate();
       if(face_beyond >= 0) {
         // The path goes on straight: through one edge of the face beyond, most often the one
         // the last window's pseudo-source lies behind; else anywhere in that face.
@@ -175,7 +155,7 @@ public:
           best_in_face(face_beyond, b, c, left);
         }
       }
-      if(c.kind == Candidate::NONE || c.distance > left + 1e-9 * (left + m_mesh.mean_edge_length))
+      if(c.kind == Candidate::NONE || (face_beyond >= 0 && c.distance > left + 1e-9 * (left + m_mesh.mean_edge_length)))
         c = best_way_to(p); // the window that led here was clipped since: look everywhere
       if(!(c.distance < infinity()))
         break;
@@ -232,7 +212,7 @@ private:
   static double infinity() { return std::numeric_limits<double>::infinity(); }
   // Barycentric coordinates and edge parameters below this are zero: the point is on the edge
   // or at the vertex.
-  static constexpr double snap = 1e-12;
+  static constexpr double snap = barycentric_snap;
 
   struct Face_source
   {
@@ -260,7 +240,8 @@ private:
     int source = -1; // the source the path starts from
   };
 
-  bool within_limit(double d) const { return d <= m_solver.max_distance(); }
+  // Reached, and within the max distance.
+  bool within_limit(double d) const { return d < infinity() && d <= m_solver.max_distance(); }
 
   Surface_location on_edge(int h, double t) const
   {
@@ -319,10 +300,9 @@ private:
   // point of barycentric coordinates b (in face(h)); true once one within `good_enough` is found.
   bool best_through_edge(int h, const std::array<double, 3>& b, Candidate& best, double good_enough) const
   {
-    const int k = h % 3;
-    const Halfedge_frame& fr = m_mesh.frame[h];
-    const double qx = b[(k + 1) % 3] * fr.length + b[(k + 2) % 3] * fr.apex_x, qy = b[(k + 2) % 3] * fr.apex_y;
-    const double tolerance = 1e-9 * fr.length;
+    const std::array<double, 2> q = m_mesh.point_in_frame(h, b);
+    const double qx = q[0], qy = q[1];
+    const double tolerance = 1e-9 * m_mesh.frame[h].length;
     for(const Edge_window* ew = m_solver.windows_of_edge(h); ew; ew = ew->next) {
       if(ew->halfedge != h)
         continue; // enters the face on the other side
@@ -377,9 +357,9 @@ private:
                     double expected = -std::numeric_limits<double>::infinity()) const
   {
     const double good_enough = expected + 1e-12 * (std::abs(expected) + m_mesh.mean_edge_length);
-    const Halfedge_frame& f0 = m_mesh.frame[3 * f];
     // p in the frame of half-edge 3f
-    const double px = b[1] * f0.length + b[2] * f0.apex_x, py = b[2] * f0.apex_y;
+    const std::array<double, 2> p = m_mesh.point_in_frame(3 * f, b);
+    const double px = p[0], py = p[1];
     Candidate vertex_way;
     for(int k = 0; k < 3; ++k) {
       if(b[k] >= 1 - snap)
@@ -388,8 +368,10 @@ private:
       const double du = m_solver.distances()[u];
       if(!(du < infinity()))
         continue;
-      const double cx = k == 0 ? 0. : (k == 1 ? f0.length : f0.apex_x), cy = k == 2 ? f0.apex_y : 0.;
-      const double d = du + norm2d(px - cx, py - cy);
+      std::array<double, 3> corner{{0., 0., 0.}};
+      corner[k] = 1;
+      const std::array<double, 2> c = m_mesh.point_in_frame(3 * f, corner);
+      const double d = du + norm2d(px - c[0], py - c[1]);
       if(d < vertex_way.distance) {
         vertex_way.kind = Candidate::VERTEX;
         vertex_way.distance = d;
@@ -406,9 +388,8 @@ private:
     auto first = std::lower_bound(m_face_sources.begin(), m_face_sources.end(), f,
                                   [](const Face_source& s, int face) { return s.face < face; });
     for(auto it = first; it != m_face_sources.end() && it->face == f; ++it) {
-      const auto& s = it->barycentric;
-      const double sx = s[1] * f0.length + s[2] * f0.apex_x, sy = s[2] * f0.apex_y;
-      const double d = norm2d(px - sx, py - sy);
+      const std::array<double, 2> q = m_mesh.point_in_frame(3 * f, it->barycentric);
+      const double d = norm2d(px - q[0], py - q[1]);
       if(d < best.distance) {
         best.kind = Candidate::SOURCE;
         best.distance = d;

@@ -67,6 +67,15 @@ struct Mesh_cache
   int opposite(int h) const { return opposite_halfedge[h]; }
   std::size_t number_of_halfedges() const { return corner_vertex.size(); }
 
+  /// The point of face(h) with barycentric coordinates b (in the order of the face's corners)
+  /// in the frame of h: h's source at the origin, its target at (length, 0), the apex above.
+  std::array<double, 2> point_in_frame(int h, const std::array<double, 3>& b) const
+  {
+    const int k = h % 3;
+    const Halfedge_frame& f = frame[h];
+    return {{b[(k + 1) % 3] * f.length + b[(k + 2) % 3] * f.apex_x, b[(k + 2) % 3] * f.apex_y}};
+  }
+
   /// Calls `f(h)` for each half-edge leaving `v`, turning around `v` from the border (if any).
   template <class Function>
   void for_each_outgoing(int v, Function f) const

@@ -24,43 +24,60 @@ struct Source_point
   std::array<double, 3> barycentric{{0., 0., 0.}};
 };
 
-/// Checks a face-point source and turns one that sits on a corner into a vertex source.
-inline Source_point normalized_source(const Mesh_cache& m, Source_point s)
+/// Barycentric coordinates below this are zero: the point is on an edge, or at a corner.
+constexpr double barycentric_snap = 1e-12;
+
+/// Throws unless `v` is a vertex index of the mesh; `role` names the point ("source", ...).
+inline void check_vertex_index(const Mesh_cache& m, long v, const char* role)
 {
-  if(s.vertex >= 0) {
-    if(std::size_t(s.vertex) >= m.number_of_vertices)
-      throw Geodesic_error("source vertex " + std::to_string(s.vertex) + " is out of range (the mesh has " +
-                           std::to_string(m.number_of_vertices) + " vertices)");
-    return s;
-  }
-  if(s.face < 0 || std::size_t(s.face) >= m.number_of_faces)
-    throw Geodesic_error("source face " + std::to_string(s.face) + " is out of range (the mesh has " +
+  if(v < 0 || std::size_t(v) >= m.number_of_vertices)
+    throw Geodesic_error(std::string(role) + " vertex " + std::to_string(v) + " is out of range (the mesh has " +
+                         std::to_string(m.number_of_vertices) + " vertices)");
+}
+
+/// Checks a point of face `face` given by barycentric coordinates (a face index of the mesh,
+/// coordinates non-negative and summing to 1) and returns its coordinates with those that are
+/// zero up to round-off made zero, summing to 1. `role` names the point in messages.
+inline std::array<double, 3> checked_barycentric(const Mesh_cache& m, long face, const std::array<double, 3>& b,
+                                                 const char* role)
+{
+  if(face < 0 || std::size_t(face) >= m.number_of_faces)
+    throw Geodesic_error(std::string(role) + " face " + std::to_string(face) + " is out of range (the mesh has " +
                          std::to_string(m.number_of_faces) + " faces)");
-  const auto& b = s.barycentric;
   const double sum = b[0] + b[1] + b[2];
   if(!std::isfinite(sum) || std::abs(sum - 1.) > 1e-9 || b[0] < -1e-12 || b[1] < -1e-12 || b[2] < -1e-12) {
     std::ostringstream msg;
     msg.precision(17);
-    msg << "barycentric coordinates (" << b[0] << ", " << b[1] << ", " << b[2] << ") of the source in face "
-        << s.face << " must be non-negative and sum to 1";
+    msg << "barycentric coordinates (" << b[0] << ", " << b[1] << ", " << b[2] << ") of the " << role << " in face "
+        << face << " must be non-negative and sum to 1";
     throw Geodesic_error(msg.str());
   }
-  // Snap coordinates that are zero up to round-off, so that a point on an edge is treated as such.
   std::array<double, 3> snapped = b;
   double snapped_sum = 0;
   for(double& c : snapped) {
-    if(c < 1e-12)
+    if(c < barycentric_snap)
       c = 0;
     snapped_sum += c;
   }
-  for(int k = 0; k < 3; ++k) {
-    s.barycentric[k] = snapped[k] / snapped_sum;
+  for(double& c : snapped)
+    c /= snapped_sum;
+  return snapped;
+}
+
+/// Checks a source and turns a face point that sits on a corner into a vertex source.
+inline Source_point normalized_source(const Mesh_cache& m, Source_point s)
+{
+  if(s.vertex >= 0) {
+    check_vertex_index(m, s.vertex, "source");
+    return s;
+  }
+  s.barycentric = checked_barycentric(m, s.face, s.barycentric, "source");
+  for(int k = 0; k < 3; ++k)
     if(s.barycentric[k] >= 1.) {
       Source_point v;
       v.vertex = m.source(3 * s.face + k);
       return v;
     }
-  }
   return s;
 }
 
@@ -121,9 +138,8 @@ void emit_face_point_windows(const Mesh_cache& m, const Source_point& s, Relax r
     for(int k = 0; k < 3; ++k) {
       const int h = 3 * face + k;
       const Halfedge_frame& f = m.frame[h];
-      // The point in the frame of h: corner k at 0, corner k+1 at (length, 0), corner k+2 at the apex.
-      const double x = b[(k + 1) % 3] * f.length + b[(k + 2) % 3] * f.apex_x;
-      const double y = b[(k + 2) % 3] * f.apex_y;
+      const std::array<double, 2> q = m.point_in_frame(h, b);
+      const double x = q[0], y = q[1];
       relax(m.source(h), norm2d(x, y)); // distance to corner k, the origin of this frame
       if(b[(k + 2) % 3] <= 0)
         continue; // the point lies on this edge

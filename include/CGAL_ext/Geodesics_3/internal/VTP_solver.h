@@ -99,9 +99,7 @@ public:
 
   void add_stop_vertex(int v)
   {
-    if(v < 0 || std::size_t(v) >= m_mesh.number_of_vertices)
-      throw Geodesic_error("stop vertex " + std::to_string(v) + " is out of range (the mesh has " +
-                           std::to_string(m_mesh.number_of_vertices) + " vertices)");
+    check_vertex_index(m_mesh, v, "stop");
     if(!m_is_stop[v]) {
       m_is_stop[v] = 1;
       m_stop_vertices.push_back(v);
