@@ -361,9 +361,8 @@ def fmt(x, spec=".3g"):
     return format(x, spec)
 
 
-def method_cell(row, method, key, spec=".3g"):
-    """A value of a method's run, or why there is none."""
-    r = row["methods"].get(method)
+def run_cell(r, key, spec=".3g"):
+    """A value of a run, or why there is none."""
     if r is None:
         return "—"
     if r["status"] != "ok":
@@ -371,11 +370,29 @@ def method_cell(row, method, key, spec=".3g"):
     return fmt(r.get(key), spec)
 
 
-def ok_value(row, method, key):
-    r = row["methods"].get(method)
+def run_value(r, key):
     if r is None or r["status"] != "ok":
         return None
     return r.get(key)
+
+
+def comparison_cell(r, value):
+    """A cell from a run's comparison with VTP: value(comparison), or why there is none."""
+    if r is None:
+        return "—"
+    if r["status"] != "ok":
+        return r["status"]
+    c = r.get("cmp")
+    return value(c) if c else "—"
+
+
+def method_cell(row, method, key, spec=".3g"):
+    """A value of a method's run, or why there is none."""
+    return run_cell(row["methods"].get(method), key, spec)
+
+
+def ok_value(row, method, key):
+    return run_value(row["methods"].get(method), key)
 
 
 def ratio(a, b):
@@ -714,35 +731,16 @@ def usable_meshes(specs, runs, warnings):
             yield spec, m
 
 
-def run_cell(r, key, spec=".3g"):
-    if r is None:
-        return "—"
-    if r["status"] != "ok":
-        return r["status"]
-    return fmt(r.get(key), spec)
-
-
-def run_value(r, key):
-    if r is None or r["status"] != "ok":
-        return None
-    return r.get(key)
-
-
 def error_percent_cell(r):
     """The mean relative error of a run against VTP, in %."""
-    if r is None:
-        return "—"
-    if r["status"] != "ok":
-        return r["status"]
-    c = r.get("cmp")
-    if c is None:
-        return "—"
-    if c["mean_rel_error"] is None:
-        return "FAILED (%d invalid)" % c["invalid"]
-    cell = fmt(percent(c["mean_rel_error"]), ".3g")
-    if c["invalid"]:
-        cell += " (%d invalid)" % c["invalid"]
-    return cell
+    def cell(c):
+        if c["mean_rel_error"] is None:
+            return "FAILED (%d invalid)" % c["invalid"]
+        text = fmt(percent(c["mean_rel_error"]), ".3g")
+        if c["invalid"]:
+            text += " (%d invalid)" % c["invalid"]
+        return text
+    return comparison_cell(r, cell)
 
 
 def mean_error(r):
@@ -1122,12 +1120,7 @@ def table31_section(specs, runs, args, warnings):
 
 
 def max_diff_cell(r):
-    if r is None:
-        return "—"
-    if r["status"] != "ok":
-        return r["status"]
-    c = r.get("cmp")
-    return fmt(c["max_diff_over_diagonal"], ".2e") if c else "—"
+    return comparison_cell(r, lambda c: fmt(c["max_diff_over_diagonal"], ".2e"))
 
 
 def count_cell(r, key):

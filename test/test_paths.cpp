@@ -567,26 +567,6 @@ struct Recorder
   }
 };
 
-/// whether the visited sequence names the same places as the path points
-template <class Path_point>
-bool same_places(const std::vector<Path_point>& visited, const std::vector<Path_point>& path)
-{
-  if(visited.size() != path.size())
-    return false;
-  for(std::size_t i = 0; i < path.size(); ++i) {
-    const Path_point &a = visited[i], &b = path[i];
-    if(a.kind != b.kind)
-      return false;
-    if(a.kind == Path_point::VERTEX && a.vertex != b.vertex)
-      return false;
-    if(a.kind == Path_point::EDGE && (a.halfedge != b.halfedge || a.t != b.t))
-      return false;
-    if(a.kind == Path_point::FACE && (a.face != b.face || a.barycentric != b.barycentric))
-      return false;
-  }
-  return true;
-}
-
 /// What the path checks measured over many targets.
 struct Path_statistics
 {
@@ -1390,7 +1370,13 @@ struct Max_distance_case
     for(Vertex v : m.vertices())
       farthest = std::max(farthest, full->distance(v));
     radius = 0.4 * farthest;
+    mmp = built<Paths>(m, s, params::algorithm(CGAL_ext::MMP).max_distance(radius));
+    fwp = built<Paths>(m, s, params::max_distance(radius));
+    pmmp = built<Parallel_paths>(m, s, params::max_distance(radius));
   }
+
+  std::unique_ptr<Paths> mmp, fwp; // built with max_distance(radius)
+  std::unique_ptr<Parallel_paths> pmmp;
 };
 
 TEST(Paths_edge_cases, MaxDistance)
@@ -1402,9 +1388,8 @@ TEST(Paths_edge_cases, MaxDistance)
   const auto& full = c.full;
   const double radius = c.radius;
   const double band = 1e-12 * diag;
-  auto mmp = built<Paths>(m, s, params::algorithm(CGAL_ext::MMP).max_distance(radius));
-  auto fwp = built<Paths>(m, s, params::max_distance(radius));
-  auto pmmp = built<Parallel_paths>(m, s, params::max_distance(radius));
+  const auto &mmp = c.mmp, &fwp = c.fwp;
+  const auto& pmmp = c.pmmp;
   const std::vector<double> function_mmp = solve_sources(m, s, params::algorithm(CGAL_ext::MMP).max_distance(radius));
   std::size_t inside = 0, outside = 0;
   for(Vertex v : m.vertices()) {
@@ -1452,9 +1437,8 @@ TEST(Paths_edge_cases, MaxDistanceNearestSourceOfFacePoints)
   const Source_set& s = c.s;
   const auto& full = c.full;
   const double radius = c.radius;
-  auto fwp = built<Paths>(m, s, params::max_distance(radius));
-  auto mmp = built<Paths>(m, s, params::algorithm(CGAL_ext::MMP).max_distance(radius));
-  auto pmmp = built<Parallel_paths>(m, s, params::max_distance(radius));
+  const auto &mmp = c.mmp, &fwp = c.fwp;
+  const auto& pmmp = c.pmmp;
   for(Vertex v : m.vertices()) // vertices do it right
     if(full->distance(v) > radius + 1e-12 * diag) {
       ASSERT_EQ(fwp->nearest_source(v), Paths::no_source) << "vertex " << v;

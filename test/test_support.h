@@ -525,41 +525,68 @@ inline Vertex insert_on_edge(Mesh& m, Vertex a, Vertex b, const Point& p)
 /// and moving the source 1e-9 into the face changes its answer by 2.2e-3 of the diagonal. So
 /// such a source is given to the oracle as a vertex inserted on the edge of a refined copy of
 /// the mesh (same surface, same indices for the existing vertices).
+/// The sources as CGAL's oracle can take them: a source on an edge (one zero barycentric
+/// coordinate) becomes a vertex inserted on that edge of a refined copy of the mesh (same
+/// surface, same indices for the existing vertices and faces, except the faces split).
+struct Refined_sources
+{
+  std::unique_ptr<Mesh> mesh;
+  std::vector<Vertex> vertices;
+  std::vector<Face_location> faces;
+  std::vector<Face> split; // faces of the original mesh split by an inserted vertex
+
+  Refined_sources(const Mesh& m, const std::vector<Vertex>& vertex_sources,
+                  const std::vector<Face_location>& face_sources)
+    : mesh(new Mesh(m)), vertices(vertex_sources)
+  {
+    for(const Face_location& l : face_sources) {
+      int zero = -1, zeros = 0;
+      for(int k = 0; k < 3; ++k)
+        if(l.second[k] == 0) {
+          zero = k;
+          ++zeros;
+        }
+      if(zeros != 1) {
+        faces.push_back(l);
+        continue;
+      }
+      const auto c = face_corners(m, l.first);
+      const Vertex a = c[(zero + 1) % 3], b = c[(zero + 2) % 3];
+      const auto h = m.halfedge(a, b);
+      split.push_back(m.face(h));
+      split.push_back(m.face(m.opposite(h)));
+      vertices.push_back(insert_on_edge(*mesh, a, b, location_point(m, l)));
+    }
+    for(const Face_location& l : faces)
+      if(!is_kept(l.first))
+        throw std::logic_error("oracle: a face source lies in a face split for a source on an edge");
+  }
+
+  /// whether face f of the original mesh is a face of the refined one
+  bool is_kept(Face f) const
+  {
+    return f != Mesh::null_face() && std::find(split.begin(), split.end(), f) == split.end();
+  }
+
+  /// adds the sources to CGAL's oracle (built on `*mesh`)
+  template <class Shortest_path>
+  void add_to(Shortest_path& sp) const
+  {
+    typedef typename Shortest_path::Barycentric_coordinates Barycentric_coordinates;
+    for(Vertex v : vertices)
+      sp.add_source_point(v);
+    for(const Face_location& l : faces)
+      sp.add_source_point(l.first, Barycentric_coordinates{{l.second[0], l.second[1], l.second[2]}});
+  }
+};
+
 inline std::vector<double> oracle(const Mesh& m, const std::vector<Vertex>& vertex_sources,
                                   const std::vector<Face_location>& face_sources = {})
 {
-  Mesh refined = m;
-  std::vector<Vertex> vs = vertex_sources;
-  std::vector<Face_location> fs;
-  std::vector<Face> changed;
-  for(const Face_location& l : face_sources) {
-    const auto c = face_corners(m, l.first);
-    int zero = -1, zeros = 0;
-    for(int k = 0; k < 3; ++k)
-      if(l.second[k] == 0) {
-        zero = k;
-        ++zeros;
-      }
-    if(zeros != 1) {
-      fs.push_back(l);
-      continue;
-    }
-    const Vertex a = c[(zero + 1) % 3], b = c[(zero + 2) % 3];
-    const auto h = m.halfedge(a, b);
-    changed.push_back(m.face(h));
-    changed.push_back(m.face(m.opposite(h)));
-    vs.push_back(insert_on_edge(refined, a, b, location_point(m, l)));
-  }
-  for(const Face_location& l : fs)
-    if(std::find(changed.begin(), changed.end(), l.first) != changed.end())
-      throw std::logic_error("oracle: a face source lies in a face split for a source on an edge");
-
+  const Refined_sources refined(m, vertex_sources, face_sources);
   typedef CGAL::Surface_mesh_shortest_path_traits<K, Mesh> Traits;
-  CGAL::Surface_mesh_shortest_path<Traits> sp(refined);
-  for(Vertex v : vs)
-    sp.add_source_point(v);
-  for(const Face_location& l : fs)
-    sp.add_source_point(l.first, Traits::Barycentric_coordinates{{l.second[0], l.second[1], l.second[2]}});
+  CGAL::Surface_mesh_shortest_path<Traits> sp(*refined.mesh);
+  refined.add_to(sp);
   sp.build_sequence_tree();
   std::vector<double> d(m.number_of_vertices(), inf);
   for(Vertex v : m.vertices()) {
@@ -589,43 +616,17 @@ public:
 
   Oracle_paths(const Mesh& m, const std::vector<Vertex>& vertex_sources,
                const std::vector<Face_location>& face_sources = {})
-    : m_original(&m), m_refined(new Mesh(m))
+    : m_original(&m), m_sources(m, vertex_sources, face_sources)
   {
-    std::vector<Vertex> vs = vertex_sources;
-    std::vector<Face_location> fs;
-    for(const Face_location& l : face_sources) {
-      int zero = -1, zeros = 0;
-      for(int k = 0; k < 3; ++k)
-        if(l.second[k] == 0) {
-          zero = k;
-          ++zeros;
-        }
-      if(zeros != 1) {
-        fs.push_back(l);
-        continue;
-      }
-      const auto c = face_corners(m, l.first);
-      const Vertex a = c[(zero + 1) % 3], b = c[(zero + 2) % 3];
-      const auto h = m.halfedge(a, b);
-      m_changed.push_back(m.face(h));
-      m_changed.push_back(m.face(m.opposite(h)));
-      vs.push_back(insert_on_edge(*m_refined, a, b, location_point(m, l)));
-    }
-    for(const Face_location& l : fs)
-      if(!can_query(l.first))
-        throw std::logic_error("Oracle_paths: a face source lies in a face split for a source on an edge");
-    m_sp.reset(new Shortest_path(*m_refined));
-    for(Vertex v : vs)
-      m_sp->add_source_point(v);
-    for(const Face_location& l : fs)
-      m_sp->add_source_point(l.first, Traits::Barycentric_coordinates{{l.second[0], l.second[1], l.second[2]}});
+    m_sp.reset(new Shortest_path(*m_sources.mesh));
+    m_sources.add_to(*m_sp);
     m_sp->build_sequence_tree();
   }
 
   /// whether face locations of f can be queried (f was not split for a source on an edge)
   bool can_query(Face f) const
   {
-    return f != Mesh::null_face() && std::find(m_changed.begin(), m_changed.end(), f) == m_changed.end();
+    return m_sources.is_kept(f);
   }
 
   /// the distance from the nearest source, +infinity where none reaches
@@ -657,14 +658,13 @@ private:
 
   Traits::Barycentric_coordinates checked(const Face_location& l) const
   {
-    if(!can_query(l.first) || face_corners(*m_original, l.first) != face_corners(*m_refined, l.first))
+    if(!can_query(l.first) || face_corners(*m_original, l.first) != face_corners(*m_sources.mesh, l.first))
       throw std::logic_error("Oracle_paths: face " + std::to_string(l.first.idx()) + " was split for a source");
     return Traits::Barycentric_coordinates{{l.second[0], l.second[1], l.second[2]}};
   }
 
   const Mesh* m_original;
-  std::unique_ptr<Mesh> m_refined; // the oracle keeps a reference to it
-  std::vector<Face> m_changed;
+  Refined_sources m_sources; // the oracle keeps a reference to its mesh
   std::unique_ptr<Shortest_path> m_sp;
 };
 
@@ -1069,15 +1069,16 @@ std::vector<Point> positions(const std::vector<PathPoint>& path)
   return p;
 }
 
-/// whether two paths are the same, point for point and bit for bit
+/// whether two paths name the same places (kinds, vertices, half-edges and parameters, faces
+/// and barycentric coordinates), point for point and bit for bit; positions are not compared
 template <class PathPoint>
-bool identical_paths(const std::vector<PathPoint>& a, const std::vector<PathPoint>& b)
+bool same_places(const std::vector<PathPoint>& a, const std::vector<PathPoint>& b)
 {
   if(a.size() != b.size())
     return false;
   for(std::size_t i = 0; i < a.size(); ++i) {
     const PathPoint &p = a[i], &q = b[i];
-    if(p.kind != q.kind || p.point != q.point)
+    if(p.kind != q.kind)
       return false;
     if(p.kind == PathPoint::VERTEX && p.vertex != q.vertex)
       return false;
@@ -1086,6 +1087,18 @@ bool identical_paths(const std::vector<PathPoint>& a, const std::vector<PathPoin
     if(p.kind == PathPoint::FACE && (p.face != q.face || p.barycentric != q.barycentric))
       return false;
   }
+  return true;
+}
+
+/// whether two paths are the same, point for point and bit for bit, positions included
+template <class PathPoint>
+bool identical_paths(const std::vector<PathPoint>& a, const std::vector<PathPoint>& b)
+{
+  if(!same_places(a, b))
+    return false;
+  for(std::size_t i = 0; i < a.size(); ++i)
+    if(a[i].point != b[i].point)
+      return false;
   return true;
 }
 

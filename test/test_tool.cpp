@@ -234,25 +234,39 @@ protected:
     return r;
   }
 
-  /// Runs the tool and expects success with an empty stderr; returns the distances of `output`.
-  std::vector<double> distances(const std::string& args, const std::string& output = "d.txt") const
+  /// Runs the tool with `--output output` and expects success, with nothing on stdout or
+  /// stderr; returns the text of `output`.
+  std::string output_of(const std::string& args, const std::string& output) const
   {
     const Result r = run(args + " --output " + output);
     EXPECT_EQ(r.exit_code, 0) << r.err;
     EXPECT_EQ(r.out, "");
     EXPECT_EQ(r.err, "");
-    return parse_distances(read_text(path(output)));
+    return read_text(path(output));
   }
 
-  /// Runs `geodesic path` with `args` and expects success with an empty stderr; returns the
-  /// polyline of `output` (txt).
+  /// Runs the tool as `output_of` does; returns the distances of `output`.
+  std::vector<double> distances(const std::string& args, const std::string& output = "d.txt") const
+  {
+    return parse_distances(output_of(args, output));
+  }
+
+  /// Runs `geodesic path` as `output_of` does; returns the polyline of `output` (txt).
   std::vector<Point> path_points(const std::string& args, const std::string& output = "p.txt") const
   {
-    const Result r = run(args + " --output " + output);
-    EXPECT_EQ(r.exit_code, 0) << r.err;
-    EXPECT_EQ(r.out, "");
-    EXPECT_EQ(r.err, "");
-    return parse_points(read_text(path(output)));
+    return parse_points(output_of(args, output));
+  }
+
+  /// Makes the output `name` a folder, so that writing it fails: the tool must fail with an
+  /// error and leave nothing but that folder.
+  void expect_failed_write(const std::string& args, const std::string& name) const
+  {
+    fs::create_directory(path(name));
+    const Result r = run(args);
+    EXPECT_NE(r.exit_code, 0);
+    EXPECT_EQ(r.err.rfind("error: ", 0), 0u) << r.err;
+    EXPECT_EQ(files(), std::set<std::string>{name});
+    EXPECT_TRUE(fs::is_directory(path(name)));
   }
 
   std::set<std::string> files() const
@@ -825,11 +839,7 @@ TEST_F(Tool, path_to_a_source_is_one_point)
 
 TEST_F(Tool, path_failed_write_leaves_no_file)
 {
-  fs::create_directory(path("p.obj"));
-  const Result r = run("path '" + elephant + "' --source 0 --target 5 --output p.obj");
-  EXPECT_NE(r.exit_code, 0);
-  EXPECT_EQ(r.err.rfind("error: ", 0), 0u) << r.err;
-  EXPECT_EQ(files(), std::set<std::string>{"p.obj"});
+  expect_failed_write("path '" + elephant + "' --source 0 --target 5 --output p.obj", "p.obj");
 }
 
 TEST_F(Tool, no_arguments)
@@ -861,12 +871,7 @@ TEST_F(Tool, help)
 // An error while writing (here the target is a folder) leaves no temporary file behind.
 TEST_F(Tool, failed_write_leaves_no_file)
 {
-  fs::create_directory(path("d.txt"));
-  const Result r = run("distances '" + elephant + "' --source 0 --output d.txt");
-  EXPECT_NE(r.exit_code, 0);
-  EXPECT_EQ(r.err.rfind("error: ", 0), 0u) << r.err;
-  EXPECT_EQ(files(), std::set<std::string>{"d.txt"});
-  EXPECT_TRUE(fs::is_directory(path("d.txt")));
+  expect_failed_write("distances '" + elephant + "' --source 0 --output d.txt", "d.txt");
 }
 
 // ---------------------------------------------------------------------------------------------
