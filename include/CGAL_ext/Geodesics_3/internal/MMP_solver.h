@@ -156,7 +156,7 @@ public:
     m_main_slot = use_one_slot_per_thread(m_pool, m_parallel);
     start_from_sources();
     if(m_parallel)
-      run_parallel();
+      Thread_team::run(true, [this](Thread_team& team) { run_parallel(team); });
     else if(m_queue_kind == BINARY_HEAP)
       run_with_heap();
     else
@@ -378,7 +378,7 @@ private:
 
   // ---- PMMP ----
 
-  void run_parallel()
+  void run_parallel(Thread_team& team)
   {
     std::vector<Bucket_queue<Queue_item>::Entry>& bucket = m_bucket_entries;
     std::vector<Propagation_output>& selected = m_selected;
@@ -413,7 +413,7 @@ private:
       // writes only its own output and its window's queued flag (each queue entry names one
       // version of a window, and only the window's current version is ever queued once).
       start = std::chrono::steady_clock::now();
-      for_each_index(m_parallel, n, 8, Chunks::FIXED, m_main_slot, [&](std::size_t i, std::size_t) {
+      team.for_each_index(n, 32, [&](std::size_t i, std::size_t) {
         Propagation_output& p = selected[i];
         if(p.window->version != p.version || !p.window->queued) {
           p.number_of_children = 0;
@@ -455,7 +455,7 @@ private:
       if(m_edge_results.size() < edges)
         m_edge_results.resize(edges);
       m_thread_outputs.resize(m_pool.number_of_slots());
-      for_each_index(m_parallel, edges, 1, Chunks::ADAPTIVE, m_main_slot, [&](std::size_t j, std::size_t slot) {
+      team.for_each_index(edges, 4, [&](std::size_t j, std::size_t slot) {
         Edge_output& out = m_thread_outputs[slot];
         Edge_result r{slot, out.pushes.size(), 0, out.updates.size(), 0, out.created};
         for(int id = m_active_edges[j].first_child; id >= 0; id = m_child_next[std::size_t(id)])

@@ -159,12 +159,16 @@ public:
       }
     }
     m_next_reset = m_reset_step;
-    do {
-      if(m_batched)
-        take_vertices_in_batches();
-      else
-        take_vertices_one_by_one();
-    } while(flush_pending());
+    Thread_team::run(m_parallel, [this](Thread_team& team) {
+      m_team = &team;
+      do {
+        if(m_batched)
+          take_vertices_in_batches();
+        else
+          take_vertices_one_by_one();
+      } while(flush_pending());
+      m_team = nullptr;
+    });
 
     update_stop_limit();
     const double l = limit();
@@ -447,8 +451,7 @@ private:
   {
     // Each task reads shared state that no task writes, and writes only itself. Chunks of a
     // fixed size: lists are small, uniform units of work.
-    for_each_index(m_parallel, n, 8, Chunks::FIXED, m_main_slot,
-                   [this](std::size_t i, std::size_t slot) { propagate(m_tasks[i], slot); });
+    m_team->for_each_index(n, 8, [this](std::size_t i, std::size_t slot) { propagate(m_tasks[i], slot); });
   }
 
   // Propagates every list that still holds windows, whether or not its edge was swept; used
@@ -605,6 +608,7 @@ private:
   double m_next_reset = 0;
   bool m_force = false;
   bool m_parallel = false; // propagate batches on TBB threads
+  Thread_team* m_team = nullptr; // during run()
   bool m_batched = false;  // take vertices from buckets, propagate lists in batches
   std::size_t m_batch_size = 512;
   Geodesic_statistics m_statistics;
