@@ -5,6 +5,12 @@
 #include "test_support.h"
 
 #include <CGAL_ext/Surface_mesh_geodesic_paths.h>
+#include <CGAL_ext/Geodesics_3/internal/Parallel_loop.h>
+
+#include <tbb/task_arena.h>
+
+#include <numeric>
+#include <stdexcept>
 
 namespace {
 
@@ -400,6 +406,87 @@ TEST(Parallel_paths, pmmp_is_identical_for_every_thread_count_and_matches_vtp)
         EXPECT_TRUE(identical_paths(many.paths[i], one.paths[i])) << where << ", path " << i;
     }
   }
+}
+
+} // namespace
+
+// ---- the thread team that runs the parallel loops of PVTP and PMMP ----
+
+namespace {
+
+using CGAL_ext::Geodesics_3::internal::Thread_team;
+
+// Runs `body(team)` on a team of the threads of an arena of `threads` threads.
+template <class Body>
+void with_team(int threads, Body body)
+{
+  tbb::task_arena arena(threads);
+  arena.execute([&] { Thread_team::run(true, body); });
+}
+
+TEST(Thread_team, every_index_is_done_once_for_every_thread_count_grain_and_size)
+{
+  for(int threads : {1, 2, 4})
+    for(std::size_t grain : {std::size_t(1), std::size_t(3), std::size_t(32)})
+      with_team(threads, [&](Thread_team& team) {
+        // Many short loops in a row, as a solver runs them; each index writes only its own cell.
+        for(std::size_t n : {std::size_t(0), std::size_t(1), std::size_t(5), std::size_t(1000), std::size_t(4097)}) {
+          for(int round = 0; round < 50; ++round) {
+            std::vector<int> visits(n, 0);
+            std::vector<std::size_t> slot_of(n, std::size_t(-1));
+            team.for_each_index(n, grain, [&](std::size_t i, std::size_t slot) {
+              ++visits[i];
+              slot_of[i] = slot;
+            });
+            for(std::size_t i = 0; i < n; ++i) {
+              ASSERT_EQ(visits[i], 1) << "index " << i << " of " << n << ", threads " << threads << ", grain " << grain;
+              ASSERT_LT(slot_of[i], std::size_t(threads));
+            }
+          }
+        }
+      });
+}
+
+TEST(Thread_team, an_exception_in_a_loop_reaches_the_caller_and_the_team_goes_on)
+{
+  for(int threads : {1, 2, 4})
+    with_team(threads, [&](Thread_team& team) {
+      for(std::size_t thrower : {std::size_t(0), std::size_t(517), std::size_t(999)}) {
+        std::vector<int> visits(1000, 0);
+        EXPECT_THROW(team.for_each_index(1000, 4,
+                                         [&](std::size_t i, std::size_t) {
+                                           ++visits[i];
+                                           if(i == thrower)
+                                             throw std::runtime_error("index " + std::to_string(i));
+                                         }),
+                     std::runtime_error);
+        // No index ran twice, and the loop left no call running: the team takes the next loop.
+        EXPECT_EQ(visits[thrower], 1);
+        EXPECT_EQ(std::count_if(visits.begin(), visits.end(), [](int v) { return v > 1; }), 0);
+        std::size_t sum = 0;
+        std::vector<std::size_t> values(100);
+        team.for_each_index(100, 1, [&](std::size_t i, std::size_t) { values[i] = i; });
+        for(std::size_t v : values)
+          sum += v;
+        EXPECT_EQ(sum, std::size_t(4950));
+      }
+    });
+  // An exception of the body itself stops the helpers and leaves run().
+  EXPECT_THROW(with_team(2, [](Thread_team&) { throw std::logic_error("body"); }), std::logic_error);
+}
+
+TEST(Thread_team, a_sequential_team_runs_the_loop_in_order_on_the_calling_thread)
+{
+  Thread_team::run(false, [](Thread_team& team) {
+    std::vector<std::size_t> order;
+    team.for_each_index(10, 3, [&](std::size_t i, std::size_t slot) {
+      order.push_back(i);
+      EXPECT_EQ(slot, team.main_slot());
+    });
+    std::vector<std::size_t> expected(10);
+    std::iota(expected.begin(), expected.end(), std::size_t(0));
+    EXPECT_EQ(order, expected);
+  });
 }
 
 } // namespace

@@ -109,7 +109,8 @@ public:
   /// Calls `f(i, slot)` for i in [0, n), in chunks of `grain` indices taken by whichever thread
   /// of the team is free; `slot` is the calling thread's index in the arena. What the caller
   /// wrote before happens before every call, and every call before the return. An exception
-  /// of `f` is rethrown here, once every index taken has been done.
+  /// of `f` is rethrown here once no call of the loop is running; indices not yet run by then
+  /// may be skipped.
   template <class Function>
   void for_each_index(std::size_t n, std::size_t grain, Function&& f)
   {
