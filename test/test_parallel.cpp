@@ -9,8 +9,10 @@
 
 #include <tbb/task_arena.h>
 
+#include <chrono>
 #include <numeric>
 #include <stdexcept>
+#include <thread>
 
 namespace {
 
@@ -473,6 +475,22 @@ TEST(Thread_team, an_exception_in_a_loop_reaches_the_caller_and_the_team_goes_on
     });
   // An exception of the body itself stops the helpers and leaves run().
   EXPECT_THROW(with_team(2, [](Thread_team&) { throw std::logic_error("body"); }), std::logic_error);
+}
+
+TEST(Thread_team, helpers_asleep_after_a_long_sequential_step_wake_for_the_next_loop)
+{
+  for(int threads : {2, 4})
+    with_team(threads, [&](Thread_team& team) {
+      for(int round = 0; round < 5; ++round) {
+        // Longer than the helpers spin and yield: they go to sleep, and must wake for this loop.
+        std::this_thread::sleep_for(std::chrono::milliseconds(4));
+        std::vector<int> visits(3000, 0);
+        team.for_each_index(visits.size(), 2, [&](std::size_t i, std::size_t) { ++visits[i]; });
+        EXPECT_EQ(std::count(visits.begin(), visits.end(), 1), 3000);
+      }
+      // The team stops (and run() returns) while the helpers sleep.
+      std::this_thread::sleep_for(std::chrono::milliseconds(4));
+    });
 }
 
 TEST(Thread_team, a_sequential_team_runs_the_loop_in_order_on_the_calling_thread)
