@@ -413,7 +413,9 @@ private:
       // writes only its own output and its window's queued flag (each queue entry names one
       // version of a window, and only the window's current version is ever queued once).
       start = std::chrono::steady_clock::now();
-      team.for_each_index(n, 32, [&](std::size_t i, std::size_t) {
+      // Chunks of 128: a propagation takes ~40 ns, and taking a chunk moves the team's ticket
+      // and count between the cores (~0.1-0.2 us each here); 32 cost 20 % of the step at T=2.
+      team.for_each_index(n, 128, [&](std::size_t i, std::size_t) {
         Propagation_output& p = selected[i];
         if(p.window->version != p.version || !p.window->queued) {
           p.number_of_children = 0;
