@@ -1353,15 +1353,16 @@ TEST(Paths_edge_cases, UnreachableTargets)
 // +infinity and have none.
 // The set-up of the max_distance tests: two sources on elephant, the unlimited build, and a
 // radius of 0.4 times the largest vertex distance.
-struct Max_distance_case
+class Paths_max_distance : public ::testing::Test
 {
+protected:
   const Mesh& m = test_mesh("elephant");
   const double diag = bbox_diagonal(m);
   Source_set s;
   std::unique_ptr<Paths> full;
   double radius = 0;
 
-  Max_distance_case()
+  Paths_max_distance()
   {
     s.vertices = {Vertex(100)};
     s.faces = {location(2000, 0.2, 0.5)};
@@ -1379,17 +1380,9 @@ struct Max_distance_case
   std::unique_ptr<Parallel_paths> pmmp;
 };
 
-TEST(Paths_edge_cases, MaxDistance)
+TEST_F(Paths_max_distance, DistancesAndPaths)
 {
-  const Max_distance_case c;
-  const Mesh& m = c.m;
-  const double diag = c.diag;
-  const Source_set& s = c.s;
-  const auto& full = c.full;
-  const double radius = c.radius;
   const double band = 1e-12 * diag;
-  const auto &mmp = c.mmp, &fwp = c.fwp;
-  const auto& pmmp = c.pmmp;
   const std::vector<double> function_mmp = solve_sources(m, s, params::algorithm(CGAL_ext::MMP).max_distance(radius));
   std::size_t inside = 0, outside = 0;
   for(Vertex v : m.vertices()) {
@@ -1429,16 +1422,8 @@ TEST(Paths_edge_cases, MaxDistance)
 }
 
 // Beyond max_distance a face point has no nearest source, as a vertex has none.
-TEST(Paths_edge_cases, MaxDistanceNearestSourceOfFacePoints)
+TEST_F(Paths_max_distance, NearestSourceOfFacePoints)
 {
-  const Max_distance_case c;
-  const Mesh& m = c.m;
-  const double diag = c.diag;
-  const Source_set& s = c.s;
-  const auto& full = c.full;
-  const double radius = c.radius;
-  const auto &mmp = c.mmp, &fwp = c.fwp;
-  const auto& pmmp = c.pmmp;
   for(Vertex v : m.vertices()) // vertices do it right
     if(full->distance(v) > radius + 1e-12 * diag) {
       ASSERT_EQ(fwp->nearest_source(v), Paths::no_source) << "vertex " << v;

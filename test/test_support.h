@@ -515,16 +515,20 @@ inline Vertex insert_on_edge(Mesh& m, Vertex a, Vertex b, const Point& p)
   return v;
 }
 
+/// The index of the only zero barycentric coordinate of a face location (a point of an edge
+/// of its face, opposite that corner), or -1 if none or several are zero.
+inline int only_zero_coordinate(const Face_location& l)
+{
+  int zeros = 0, zero = -1;
+  for(int k = 0; k < 3; ++k)
+    if(l.second[k] == 0) {
+      ++zeros;
+      zero = k;
+    }
+  return zeros == 1 ? zero : -1;
+}
+
 #ifndef CGAL_EXT_TEST_NO_ORACLE
-/// CGAL::Surface_mesh_shortest_path's distances from vertex and face-location sources, by
-/// vertex index; its -1 (unreachable) becomes +infinity.
-///
-/// CGAL 5.5 mishandles a source on an edge (one zero barycentric coordinate): no cone targets
-/// the end vertices of the edge (CGAL issue 6681, fixed upstream by PR 6739). On elephant,
-/// face 1111 at (0, 0.6, 0.4), it reports 0.00610 at the end vertex 1672 instead of 0.00915,
-/// and moving the source 1e-9 into the face changes its answer by 2.2e-3 of the diagonal. So
-/// such a source is given to the oracle as a vertex inserted on the edge of a refined copy of
-/// the mesh (same surface, same indices for the existing vertices).
 /// The sources as CGAL's oracle can take them: a source on an edge (one zero barycentric
 /// coordinate) becomes a vertex inserted on that edge of a refined copy of the mesh (same
 /// surface, same indices for the existing vertices and faces, except the faces split).
@@ -540,13 +544,8 @@ struct Refined_sources
     : mesh(new Mesh(m)), vertices(vertex_sources)
   {
     for(const Face_location& l : face_sources) {
-      int zero = -1, zeros = 0;
-      for(int k = 0; k < 3; ++k)
-        if(l.second[k] == 0) {
-          zero = k;
-          ++zeros;
-        }
-      if(zeros != 1) {
+      const int zero = only_zero_coordinate(l);
+      if(zero < 0) {
         faces.push_back(l);
         continue;
       }
@@ -580,6 +579,15 @@ struct Refined_sources
   }
 };
 
+/// CGAL::Surface_mesh_shortest_path's distances from vertex and face-location sources, by
+/// vertex index; its -1 (unreachable) becomes +infinity.
+///
+/// CGAL 5.5 mishandles a source on an edge (one zero barycentric coordinate): no cone targets
+/// the end vertices of the edge (CGAL issue 6681, fixed upstream by PR 6739). On elephant,
+/// face 1111 at (0, 0.6, 0.4), it reports 0.00610 at the end vertex 1672 instead of 0.00915,
+/// and moving the source 1e-9 into the face changes its answer by 2.2e-3 of the diagonal. So
+/// such a source is given to the oracle as a vertex inserted on the edge of a refined copy of
+/// the mesh (same surface, same indices for the existing vertices).
 inline std::vector<double> oracle(const Mesh& m, const std::vector<Vertex>& vertex_sources,
                                   const std::vector<Face_location>& face_sources = {})
 {
@@ -1010,13 +1018,8 @@ template <class PathPoint>
 inline bool on_border_edge(const Mesh& m, const Face_location& l)
 {
   const auto c = face_corners(m, l.first);
-  int zeros = 0, zero = -1;
-  for(int k = 0; k < 3; ++k)
-    if(l.second[k] == 0) {
-      ++zeros;
-      zero = k;
-    }
-  return zeros == 1 && m.is_border(m.opposite(m.halfedge(c[(zero + 1) % 3], c[(zero + 2) % 3])));
+  const int zero = only_zero_coordinate(l);
+  return zero >= 0 && m.is_border(m.opposite(m.halfedge(c[(zero + 1) % 3], c[(zero + 2) % 3])));
 }
 
 /// The exact distance (VTP) at a face location with one zero coordinate, a point of an edge: the
@@ -1026,13 +1029,8 @@ inline double distance_at_edge_point(const Mesh& m, const std::vector<Vertex>& v
                                      const std::vector<Face_location>& face_sources, const Face_location& l)
 {
   const auto c = face_corners(m, l.first);
-  int zeros = 0, zero = -1;
-  for(int k = 0; k < 3; ++k)
-    if(l.second[k] == 0) {
-      ++zeros;
-      zero = k;
-    }
-  if(zeros != 1)
+  const int zero = only_zero_coordinate(l);
+  if(zero < 0)
     throw std::logic_error("distance_at_edge_point: not a point of an edge");
   const Vertex a = c[(zero + 1) % 3], b = c[(zero + 2) % 3];
   const auto h = m.halfedge(a, b);

@@ -28,6 +28,17 @@ namespace CGAL_ext {
 namespace Geodesics_3 {
 namespace internal {
 
+/// The calling thread's index in the task arena it runs in: its slot in per-thread storage
+/// (0 outside an arena, or without TBB).
+inline std::size_t this_thread_slot()
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  return std::size_t(std::max(0, tbb::this_task_arena::current_thread_index()));
+#else
+  return 0;
+#endif
+}
+
 /// Gives a pool one slot per thread of the task arena the caller runs in, and returns the slot
 /// of the calling thread. (Sequentially: one slot, slot 0.)
 template <class Pool>
@@ -36,7 +47,7 @@ std::size_t use_one_slot_per_thread(Pool& pool, bool parallel)
 #ifdef CGAL_LINKED_WITH_TBB
   if(parallel) {
     pool.set_number_of_slots(std::size_t(tbb::this_task_arena::max_concurrency()));
-    return std::size_t(std::max(0, tbb::this_task_arena::current_thread_index()));
+    return this_thread_slot();
   }
 #endif
   (void)pool;
@@ -77,7 +88,7 @@ public:
     const Membership member;
 #ifdef CGAL_LINKED_WITH_TBB
     if(parallel) {
-      team.m_main_slot = std::size_t(std::max(0, tbb::this_task_arena::current_thread_index()));
+      team.m_main_slot = this_thread_slot();
       const int helpers = tbb::this_task_arena::max_concurrency() - 1;
       if(helpers > 0) {
         team.m_has_helpers = true;
@@ -257,11 +268,7 @@ private:
 
   void help()
   {
-#ifdef CGAL_LINKED_WITH_TBB
-    const std::size_t slot = std::size_t(tbb::this_task_arena::current_thread_index());
-#else
-    const std::size_t slot = 0;
-#endif
+    const std::size_t slot = this_thread_slot();
     std::uint32_t seen = 0;
     for(;;) {
       for(Back_off wait; !has_new_loop(seen);)
