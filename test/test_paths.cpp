@@ -752,22 +752,18 @@ TEST_P(Shortest_paths, ValidAndMatchOracle)
   for(int a = 0; a < 3; ++a) {
     const std::string label = name + " " + source_names[kind] + " " + algorithm_names[a];
     Path_statistics stats;
-    for(Vertex v : vertex_targets) {
+    auto check = [&](const auto& target) { // the build of algorithm a
       if(a == 0)
-        check_path(m, s, *mmp, v, reference, stats, label);
+        check_path(m, s, *mmp, target, reference, stats, label);
       else if(a == 1)
-        check_path(m, s, *fwp, v, reference, stats, label);
+        check_path(m, s, *fwp, target, reference, stats, label);
       else
-        check_path(m, s, *pmmp, v, reference, stats, label);
-    }
-    for(const Face_location& l : face_targets_kept) {
-      if(a == 0)
-        check_path(m, s, *mmp, l, reference, stats, label);
-      else if(a == 1)
-        check_path(m, s, *fwp, l, reference, stats, label);
-      else
-        check_path(m, s, *pmmp, l, reference, stats, label);
-    }
+        check_path(m, s, *pmmp, target, reference, stats, label);
+    };
+    for(Vertex v : vertex_targets)
+      check(v);
+    for(const Face_location& l : face_targets_kept)
+      check(l);
     stats.print(label);
     const std::size_t reachable = stats.paths - stats.unreachable - stats.without_oracle_path;
     EXPECT_GE(double(stats.close), close_fraction * double(reachable)) << label;
