@@ -1,0 +1,44 @@
+// Copyright (c) 2026 The CGAL_ext geodesics developers.
+#ifndef CGAL_EXT_GEODESICS_3_TOLERANCES_H
+#define CGAL_EXT_GEODESICS_3_TOLERANCES_H
+
+/// \file Tolerances.h
+/// The package's tolerances, in one place: what round-off may do to input and to the windows
+/// without changing a result. Relative tolerances are multiplied by the length named with them.
+
+namespace CGAL_ext {
+namespace Geodesics_3 {
+
+/// Barycentric coordinates of a face point must sum to 1 within this.
+constexpr double barycentric_sum_tolerance = 1e-9;
+/// A barycentric coordinate may be this much below 0 (it is then 0); coordinates below it are
+/// snapped to 0 (the point is on an edge or at a corner).
+constexpr double barycentric_snap = 1e-12;
+
+/// A triangle whose height is below this fraction of its longest side is degenerate: it cannot
+/// be unfolded reliably.
+constexpr double degenerate_height_ratio = 1e-12;
+/// A vertex whose angle sum exceeds 2 pi minus this (radians) is a pseudo-source: a saddle
+/// excess of round-off still leaves a shadow no window covers.
+constexpr double saddle_angle_tolerance = 1e-6;
+
+/// Windows (and pieces of windows) narrower than this fraction of the mean edge length are
+/// dropped: their wedge is covered by their neighbours up to round-off.
+constexpr double min_window_length_ratio = 1e-10;
+/// Solving for the points where two windows give the same distance, the quadratic term is zero
+/// when below this fraction of the terms it is the difference of.
+constexpr double quadratic_cancellation_ratio = 1e-14;
+
+/// Path tracing: a way to a point within this fraction (of the distance plus the mean edge
+/// length) of the expected distance is taken at once; a corner replaces an edge way only when
+/// shorter by more than this.
+constexpr double path_round_off_ratio = 1e-12;
+/// Path tracing: the way found straight ahead is trusted while it is within this fraction of the
+/// expected distance; beyond it, every way to the point is searched. Along an edge of length l,
+/// rays crossing it within this fraction of l from a window's interval still count as crossing.
+constexpr double path_search_ratio = 1e-9;
+
+} // namespace Geodesics_3
+} // namespace CGAL_ext
+
+#endif // CGAL_EXT_GEODESICS_3_TOLERANCES_H
