@@ -16,7 +16,7 @@ namespace CGAL_ext {
 /// \return the sum of the Euclidean lengths of the segments between consecutive points of
 ///         `points` (0 for fewer than two points); the length of a shortest path given by
 ///         `Surface_mesh_geodesic_paths::shortest_path_points()` is the distance of its target.
-/// \tparam PointRange a range of CGAL 3D points (`CGAL::squared_distance` applies to them)
+/// \tparam PointRange a range of 3D points with `x()`, `y()` and `z()` (CGAL's `Point_3`)
 template <class PointRange>
 double polyline_length(const PointRange& points)
 {
@@ -25,7 +25,12 @@ double polyline_length(const PointRange& points)
   if(previous == std::end(points))
     return length;
   for(auto p = std::next(previous); p != std::end(points); previous = p++)
-    length += std::sqrt(CGAL::to_double(CGAL::squared_distance(*previous, *p)));
+  {
+    const double dx = CGAL::to_double(p->x()) - CGAL::to_double(previous->x());
+    const double dy = CGAL::to_double(p->y()) - CGAL::to_double(previous->y());
+    const double dz = CGAL::to_double(p->z()) - CGAL::to_double(previous->z());
+    length += std::sqrt(dx * dx + dy * dy + dz * dz);
+  }
   return length;
 }
 
