@@ -5,10 +5,11 @@
 #include "test_support.h"
 
 #include <CGAL_ext/Surface_mesh_geodesic_paths.h>
-#include <CGAL_ext/Geodesics_3/internal/Parallel_loop.h>
+#include <CGAL_ext/Geodesics_3/internal/Parallel_for.h>
 
 #include <tbb/task_arena.h>
 
+#include <atomic>
 #include <chrono>
 #include <numeric>
 #include <stdexcept>
@@ -412,31 +413,25 @@ TEST(Parallel_paths, pmmp_is_identical_for_every_thread_count_and_matches_vtp)
 
 } // namespace
 
-// ---- the thread team that runs the parallel loops of PVTP and PMMP ----
+// ---- the parallel loop of PVTP and PMMP: oneTBB's parallel_for in the caller's task arena ----
 
 namespace {
 
-using CGAL_ext::Geodesics_3::internal::Thread_team;
+using CGAL_ext::Geodesics_3::internal::for_each_index;
+using CGAL_ext::Geodesics_3::internal::this_thread_slot;
 
-// Runs `body(team)` on a team of the threads of an arena of `threads` threads.
-template <class Body>
-void with_team(int threads, Body body)
-{
-  tbb::task_arena arena(threads);
-  arena.execute([&] { Thread_team::run(true, body); });
-}
-
-TEST(Thread_team, every_index_is_done_once_for_every_thread_count_grain_and_size)
+TEST(Parallel_for, every_index_is_done_once_for_every_thread_count_grain_and_size)
 {
   for(int threads : {1, 2, 4})
-    for(std::size_t grain : {std::size_t(1), std::size_t(3), std::size_t(32)})
-      with_team(threads, [&](Thread_team& team) {
+    for(std::size_t grain : {std::size_t(1), std::size_t(3), std::size_t(32)}) {
+      tbb::task_arena arena(threads);
+      arena.execute([&] {
         // Many short loops in a row, as a solver runs them; each index writes only its own cell.
         for(std::size_t n : {std::size_t(0), std::size_t(1), std::size_t(5), std::size_t(1000), std::size_t(4097)}) {
-          for(int round = 0; round < 50; ++round) {
+          for(int round = 0; round < 20; ++round) {
             std::vector<int> visits(n, 0);
             std::vector<std::size_t> slot_of(n, std::size_t(-1));
-            team.for_each_index(n, grain, [&](std::size_t i, std::size_t slot) {
+            for_each_index(true, n, grain, [&](std::size_t i, std::size_t slot) {
               ++visits[i];
               slot_of[i] = slot;
             });
@@ -447,59 +442,43 @@ TEST(Thread_team, every_index_is_done_once_for_every_thread_count_grain_and_size
           }
         }
       });
+    }
 }
 
-TEST(Thread_team, an_exception_in_a_loop_reaches_the_caller_and_the_team_goes_on)
+TEST(Parallel_for, an_exception_in_a_loop_reaches_the_caller_and_the_next_loop_runs)
 {
-  for(int threads : {1, 2, 4})
-    with_team(threads, [&](Thread_team& team) {
+  for(int threads : {1, 2, 4}) {
+    tbb::task_arena arena(threads);
+    arena.execute([&] {
       for(std::size_t thrower : {std::size_t(0), std::size_t(517), std::size_t(999)}) {
-        std::vector<int> visits(1000, 0);
-        EXPECT_THROW(team.for_each_index(1000, 4,
-                                         [&](std::size_t i, std::size_t) {
-                                           ++visits[i];
-                                           if(i == thrower)
-                                             throw std::runtime_error("index " + std::to_string(i));
-                                         }),
+        std::vector<std::atomic<int>> visits(1000);
+        EXPECT_THROW(for_each_index(true, 1000, 4,
+                                    [&](std::size_t i, std::size_t) {
+                                      ++visits[i];
+                                      if(i == thrower)
+                                        throw std::runtime_error("index " + std::to_string(i));
+                                    }),
                      std::runtime_error);
-        // No index ran twice, and the loop left no call running: the team takes the next loop.
+        // No index ran twice (indices after the exception may be skipped).
         EXPECT_EQ(visits[thrower], 1);
-        EXPECT_EQ(std::count_if(visits.begin(), visits.end(), [](int v) { return v > 1; }), 0);
-        std::size_t sum = 0;
-        std::vector<std::size_t> values(100);
-        team.for_each_index(100, 1, [&](std::size_t i, std::size_t) { values[i] = i; });
-        for(std::size_t v : values)
-          sum += v;
-        EXPECT_EQ(sum, std::size_t(4950));
+        EXPECT_EQ(std::count_if(visits.begin(), visits.end(), [](const std::atomic<int>& v) { return v > 1; }), 0);
+        std::vector<std::size_t> values(100, 0);
+        for_each_index(true, 100, 1, [&](std::size_t i, std::size_t) { values[i] = i; });
+        EXPECT_EQ(std::accumulate(values.begin(), values.end(), std::size_t(0)), std::size_t(4950));
       }
     });
-  // An exception of the body itself stops the helpers and leaves run().
-  EXPECT_THROW(with_team(2, [](Thread_team&) { throw std::logic_error("body"); }), std::logic_error);
+  }
 }
 
-TEST(Thread_team, helpers_asleep_after_a_long_sequential_step_wake_for_the_next_loop)
+TEST(Parallel_for, a_sequential_loop_runs_in_order_on_the_calling_thread)
 {
-  for(int threads : {2, 4})
-    with_team(threads, [&](Thread_team& team) {
-      for(int round = 0; round < 5; ++round) {
-        // Longer than the helpers spin and yield: they go to sleep, and must wake for this loop.
-        std::this_thread::sleep_for(std::chrono::milliseconds(4));
-        std::vector<int> visits(3000, 0);
-        team.for_each_index(visits.size(), 2, [&](std::size_t i, std::size_t) { ++visits[i]; });
-        EXPECT_EQ(std::count(visits.begin(), visits.end(), 1), 3000);
-      }
-      // The team stops (and run() returns) while the helpers sleep.
-      std::this_thread::sleep_for(std::chrono::milliseconds(4));
-    });
-}
-
-TEST(Thread_team, a_sequential_team_runs_the_loop_in_order_on_the_calling_thread)
-{
-  Thread_team::run(false, [](Thread_team& team) {
+  tbb::task_arena arena(4);
+  arena.execute([] {
     std::vector<std::size_t> order;
-    team.for_each_index(10, 3, [&](std::size_t i, std::size_t slot) {
+    const std::size_t caller = this_thread_slot();
+    for_each_index(false, 10, 3, [&](std::size_t i, std::size_t slot) {
       order.push_back(i);
-      EXPECT_EQ(slot, team.main_slot());
+      EXPECT_EQ(slot, caller);
     });
     std::vector<std::size_t> expected(10);
     std::iota(expected.begin(), expected.end(), std::size_t(0));

@@ -5,30 +5,21 @@
 /// \file Surface_mesh_geodesic_paths.h
 /// Exact geodesic distances at any surface point and shortest paths, by MMP, FWP-MMP or PMMP.
 
-#include <CGAL_ext/geodesic_distances.h>
+#include <CGAL_ext/Geodesics_3/Geodesic_algorithm.h>
 #include <CGAL_ext/Geodesics_3/Geodesic_error.h>
 #include <CGAL_ext/Geodesics_3/Geodesic_statistics.h>
 #include <CGAL_ext/Geodesics_3/Named_function_parameters.h>
 #include <CGAL_ext/Geodesics_3/internal/Geodesic_path_tracer.h>
+#include <CGAL_ext/Geodesics_3/internal/Geodesic_setup.h>
 #include <CGAL_ext/Geodesics_3/internal/MMP_solver.h>
-#include <CGAL_ext/Geodesics_3/internal/Mesh_cache.h>
 
-#include <CGAL/boost/graph/helpers.h>
-#include <CGAL/boost/graph/named_params_helper.h>
-#include <CGAL/boost/graph/properties.h>
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/tags.h>
 
-#ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/task_arena.h>
-#endif
-
 #include <array>
-#include <chrono>
 #include <cstddef>
-#include <functional>
-#include <limits>
 #include <memory>
+#include <string>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -71,6 +62,7 @@ class Surface_mesh_geodesic_paths
                 "use CGAL::Sequential_tag or CGAL::Parallel_if_available_tag");
 #endif
   typedef Geodesics_3::internal::Surface_location Location;
+  typedef Geodesics_3::internal::Mesh_setup<TriangleMesh, VertexPointMap> Mesh_setup;
 
 public:
   typedef boost::graph_traits<TriangleMesh> Graph_traits;
@@ -138,26 +130,8 @@ public:
   ///         coordinate or a degenerate triangle
   template <class NamedParameters = parameters::Default_named_parameters_type>
   explicit Surface_mesh_geodesic_paths(const TriangleMesh& tm, const NamedParameters& np = parameters::default_values())
-    : m_tm(&tm)
-    , m_cache(std::make_unique<Geodesics_3::internal::Mesh_cache>())
+    : m_mesh(tm, np)
   {
-    using CGAL::parameters::choose_parameter;
-    using CGAL::parameters::get_parameter;
-    const auto start = std::chrono::steady_clock::now();
-    m_vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                             get_const_property_map(CGAL::vertex_point, tm));
-    const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
-    const auto fim = CGAL::get_initialized_face_index_map(tm, np);
-    Geodesics_3::internal::build_mesh_cache(tm, m_vpm, vim, fim, *m_cache);
-    m_vertex_of_index.resize(m_cache->number_of_vertices);
-    m_face_of_index.resize(m_cache->number_of_faces);
-    for(vertex_descriptor v : vertices(tm))
-      m_vertex_of_index[std::size_t(get(vim, v))] = v;
-    for(face_descriptor f : faces(tm))
-      m_face_of_index[std::size_t(get(fim, f))] = f;
-    m_vim = [vim](vertex_descriptor v) { return int(get(vim, v)); };
-    m_fim = [fim](face_descriptor f) { return int(get(fim, f)); };
-    m_seconds_setup = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
 
   /// \name Sources
@@ -168,26 +142,13 @@ public:
   /// \param v the vertex
   /// \return the index of the source (the number of sources added before it)
   /// \throws Geodesic_error when `v` is not a vertex of the mesh (index out of range)
-  std::size_t add_source(vertex_descriptor v)
-  {
-    Geodesics_3::internal::Source_point s;
-    s.vertex = m_vim(v);
-    Geodesics_3::internal::check_vertex_index(*m_cache, s.vertex, "source");
-    return add(s);
-  }
+  std::size_t add_source(vertex_descriptor v) { return add(m_mesh.source_point(v)); }
   /// adds a source at a point of a face.
   /// \param location the face and barycentric coordinates of the point
   /// \return the index of the source
   /// \throws Geodesic_error when the face is out of range or the coordinates are not a convex
   ///         combination
-  std::size_t add_source(const Face_location& location)
-  {
-    Geodesics_3::internal::Source_point s;
-    s.face = m_fim(location.first);
-    for(int k = 0; k < 3; ++k)
-      s.barycentric[k] = CGAL::to_double(location.second[k]);
-    return add(s);
-  }
+  std::size_t add_source(const Face_location& location) { return add(m_mesh.source_point(location)); }
   /// adds a source at a point of a face.
   /// \param f the face
   /// \param b barycentric coordinates of the point in `f`
@@ -251,34 +212,28 @@ public:
   template <class NamedParameters = parameters::Default_named_parameters_type>
   void build(const NamedParameters& np = parameters::default_values())
   {
-    using CGAL::parameters::choose_parameter;
-    using CGAL::parameters::get_parameter;
+    namespace internal = Geodesics_3::internal;
     // (CGAL::Parallel_if_available_tag is CGAL::Parallel_tag when TBB is linked)
     constexpr bool parallel = std::is_same<ConcurrencyTag, CGAL::Parallel_tag>::value;
     if(m_sources.empty())
       throw Geodesic_error("no source was given");
-    const Geodesic_algorithm algorithm = choose_parameter(get_parameter(np, CGAL::internal_np::algorithm), FWP_MMP);
-    if(algorithm != MMP && algorithm != FWP_MMP)
-      throw Geodesic_error("Surface_mesh_geodesic_paths builds with MMP or FWP_MMP only, got algorithm " +
-                           std::to_string(int(algorithm)));
-    auto solver = std::make_unique<Geodesics_3::internal::MMP_solver>(*m_cache);
+    const internal::Solver_settings settings = internal::read_solver_settings(np, FWP_MMP);
+    if(settings.algorithm == VTP)
+      throw Geodesic_error("Surface_mesh_geodesic_paths builds with MMP or FWP_MMP only, got algorithm VTP");
+    auto solver = std::make_unique<internal::MMP_solver>(m_mesh.cache(), settings, parallel);
     for(const auto& s : m_sources)
       solver->add_source(s);
-    Geodesics_3::internal::configure_mmp_solver<parallel>(*solver, algorithm, np);
-    const int threads = Geodesics_3::internal::number_of_threads_parameter(np);
     // The parameters are valid: the previous result goes now, so that two sets of windows are
     // never held at once.
     forget_build();
-    Geodesics_3::internal::run_solver<parallel>(*solver, threads);
-    auto tracer = std::make_unique<Geodesics_3::internal::Geodesic_path_tracer>(*solver);
-    m_statistics = solver->statistics();
-    m_statistics.seconds_setup = m_seconds_setup;
+    internal::run_solver<parallel>(*solver, settings.number_of_threads);
+    m_tracer = std::make_unique<internal::Geodesic_path_tracer>(solver->windows(), solver->distances(),
+                                                                solver->nearest_sources(), solver->sources(),
+                                                                solver->max_distance());
     m_solver = std::move(solver);
-    m_tracer = std::move(tracer);
-    Geodesic_statistics* stats =
-      choose_parameter(get_parameter(np, internal_np::statistics), static_cast<Geodesic_statistics*>(nullptr));
-    if(stats)
-      *stats = m_statistics;
+    m_statistics = m_solver->statistics();
+    m_statistics.seconds_setup = m_mesh.seconds();
+    internal::report_statistics(settings, m_statistics, m_mesh.seconds());
   }
 
   /// \return whether `build()` ran since the sources last changed
@@ -321,9 +276,7 @@ public:
   template <class VertexDistanceMap>
   void vertex_distances(VertexDistanceMap vertex_distance_map) const
   {
-    const std::vector<double>& d = built().distances();
-    for(std::size_t i = 0; i < d.size(); ++i)
-      put(vertex_distance_map, m_vertex_of_index[i], d[i]);
+    m_mesh.write_vertex_values(vertex_distance_map, built().distances());
   }
 
   /// writes the points of the shortest path from the nearest source to `target`, the source
@@ -376,7 +329,7 @@ private:
   std::size_t add(Geodesics_3::internal::Source_point s)
   {
     // checked here, so that the error names the source being added
-    s = Geodesics_3::internal::normalized_source(*m_cache, s);
+    s = Geodesics_3::internal::normalized_source(m_mesh.cache(), s);
     m_sources.push_back(s);
     forget_build();
     return m_sources.size() - 1;
@@ -400,14 +353,14 @@ private:
     return *m_tracer;
   }
 
-  int checked(vertex_descriptor v) const { return tracer().locate_vertex(m_vim(v)).vertex; }
-  Location locate(vertex_descriptor v) const { return tracer().locate_vertex(m_vim(v)); }
+  int checked(vertex_descriptor v) const { return tracer().locate_vertex(m_mesh.index(v)).vertex; }
+  Location locate(vertex_descriptor v) const { return tracer().locate_vertex(m_mesh.index(v)); }
   Location locate(const Face_location& p) const
   {
     std::array<double, 3> b;
     for(int k = 0; k < 3; ++k)
       b[k] = CGAL::to_double(p.second[k]);
-    return tracer().locate(m_fim(p.first), b);
+    return tracer().locate(m_mesh.index(p.first), b);
   }
 
   template <class Target, class Function>
@@ -428,18 +381,15 @@ private:
     p.t = FT(0);
     p.barycentric = {{FT(0), FT(0), FT(0)}};
     if(l.kind == Location::VERTEX) {
-      p.vertex = m_vertex_of_index[std::size_t(l.vertex)];
-      p.point = get(m_vpm, p.vertex);
+      p.vertex = m_mesh.vertex_of(l.vertex);
+      p.point = get(m_mesh.vertex_point_map(), p.vertex);
       return p;
     }
     if(l.kind == Location::EDGE) {
-      // Half-edge 3f+k of the cache is the k-th after halfedge(f) (the cache's corner order).
-      p.halfedge = halfedge(m_face_of_index[std::size_t(l.halfedge / 3)], *m_tm);
-      for(int k = 0; k < l.halfedge % 3; ++k)
-        p.halfedge = next(p.halfedge, *m_tm);
+      p.halfedge = m_mesh.halfedge_of(l.halfedge);
       p.t = FT(l.t);
     } else {
-      p.face = m_face_of_index[std::size_t(l.face)];
+      p.face = m_mesh.face_of(l.face);
       for(int k = 0; k < 3; ++k)
         p.barycentric[k] = FT(l.barycentric[k]);
     }
@@ -448,19 +398,13 @@ private:
     return p;
   }
 
-  const TriangleMesh* m_tm; // a pointer, so that the object can be moved
-  VertexPointMap m_vpm;
-  std::function<int(vertex_descriptor)> m_vim;
-  std::function<int(face_descriptor)> m_fim;
-  // On the heap, so that the solver's and tracer's references survive a move of this object.
-  std::unique_ptr<Geodesics_3::internal::Mesh_cache> m_cache;
-  std::vector<vertex_descriptor> m_vertex_of_index;
-  std::vector<face_descriptor> m_face_of_index;
+  // Solver and tracer on the heap, like the mesh cache, so that their references survive a
+  // move of this object.
+  Mesh_setup m_mesh;
   std::vector<Geodesics_3::internal::Source_point> m_sources;
   std::unique_ptr<Geodesics_3::internal::MMP_solver> m_solver;
   std::unique_ptr<Geodesics_3::internal::Geodesic_path_tracer> m_tracer;
   Geodesic_statistics m_statistics;
-  double m_seconds_setup = 0;
 };
 
 } // namespace CGAL_ext

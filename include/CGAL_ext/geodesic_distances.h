@@ -5,161 +5,19 @@
 /// \file geodesic_distances.h
 /// The one-shot function computing exact geodesic distances from sources to every vertex.
 
+#include <CGAL_ext/Geodesics_3/Geodesic_algorithm.h>
 #include <CGAL_ext/Geodesics_3/Geodesic_error.h>
 #include <CGAL_ext/Geodesics_3/Geodesic_statistics.h>
 #include <CGAL_ext/Geodesics_3/Named_function_parameters.h>
-#include <CGAL_ext/Geodesics_3/internal/MMP_solver.h>
-#include <CGAL_ext/Geodesics_3/internal/Mesh_cache.h>
+#include <CGAL_ext/Geodesics_3/internal/Geodesic_setup.h>
 #include <CGAL_ext/Geodesics_3/internal/VTP_solver.h>
+#include <CGAL_ext/Surface_mesh_geodesic_paths.h>
 
-#include <CGAL/boost/graph/named_params_helper.h>
-#include <CGAL/boost/graph/properties.h>
 #include <CGAL/tags.h>
 
-#ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/task_arena.h>
-#endif
-
-#include <array>
-#include <chrono>
-#include <iterator>
-#include <limits>
 #include <type_traits>
-#include <utility>
-#include <vector>
 
 namespace CGAL_ext {
-
-/// \ingroup PkgGeodesics3Ref
-/// The solvers that `geodesic_distances()` can run, chosen with the named parameter
-/// `algorithm`.
-enum Geodesic_algorithm
-{
-  /// exact vertex-oriented triangle propagation (thesis chapter 4.1), the default of
-  /// `geodesic_distances()`; with `CGAL::Parallel_tag`: PVTP
-  VTP,
-  /// exact window propagation with the windows kept on the edges, taken in exact order of
-  /// distance from a binary heap (Mitchell, Mount and Papadimitriou; thesis chapter 3)
-  MMP,
-  /// MMP with the windows taken bucket by bucket (fast wavefront propagation), the default of
-  /// `Surface_mesh_geodesic_paths`; with `CGAL::Parallel_tag`: PMMP
-  FWP_MMP
-};
-
-/// \ingroup PkgGeodesics3Ref
-/// The default of the named parameter `batch_size`: how many window lists the batched solvers
-/// (parallel or approximate) propagate together at most.
-constexpr std::size_t default_batch_size = 512;
-
-/// \ingroup PkgGeodesics3Ref
-/// The default of the named parameter `batch_size` for PMMP: how many windows are selected and
-/// propagated together at most (the thesis's K; its running time stops changing beyond 1000).
-constexpr std::size_t default_window_batch_size = 1024;
-
-namespace Geodesics_3 {
-namespace internal {
-
-template <class T, class = void>
-struct is_range : std::false_type {};
-template <class T>
-struct is_range<T, std::void_t<decltype(std::begin(std::declval<const T&>()))>> : std::true_type {};
-
-// One source given as a vertex.
-template <class TriangleMesh, class VIM, class FIM>
-Source_point to_source_point(const TriangleMesh&, VIM vim, FIM,
-                             typename boost::graph_traits<TriangleMesh>::vertex_descriptor v)
-{
-  Source_point s;
-  s.vertex = static_cast<int>(get(vim, v));
-  return s;
-}
-
-// One source given as a face location: a face and barycentric coordinates in the order of the
-// face's vertices, starting at `source(halfedge(f))` (CGAL's Face_location convention).
-template <class TriangleMesh, class VIM, class FIM, class FT>
-Source_point to_source_point(
-  const TriangleMesh&, VIM, FIM fim,
-  const std::pair<typename boost::graph_traits<TriangleMesh>::face_descriptor, std::array<FT, 3>>& location)
-{
-  Source_point s;
-  s.face = static_cast<int>(get(fim, location.first));
-  for(int k = 0; k < 3; ++k)
-    s.barycentric[k] = CGAL::to_double(location.second[k]);
-  return s;
-}
-
-template <class TriangleMesh, class VIM, class FIM, class Sources>
-std::vector<Source_point> to_source_points(const TriangleMesh& tm, VIM vim, FIM fim, const Sources& sources)
-{
-  std::vector<Source_point> points;
-  if constexpr(is_range<Sources>::value) {
-    for(const auto& s : sources)
-      points.push_back(to_source_point(tm, vim, fim, s));
-  } else {
-    points.push_back(to_source_point(tm, vim, fim, sources));
-  }
-  return points;
-}
-
-// The named parameter `batch_size`, checked, or `fallback`.
-template <class NamedParameters>
-std::size_t batch_size_parameter(const NamedParameters& np, std::size_t fallback)
-{
-  const auto batch = CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::batch_size),
-                                                        fallback);
-  if(!(batch > 0))
-    throw Geodesic_error("batch size must be positive, got " + std::to_string(batch));
-  return static_cast<std::size_t>(batch);
-}
-
-// The named parameter `number_of_threads`, checked (0: TBB's choice).
-template <class NamedParameters>
-int number_of_threads_parameter(const NamedParameters& np)
-{
-  const long threads = static_cast<long>(
-    CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::number_of_threads), 0));
-  if(threads < 0)
-    throw Geodesic_error("number of threads must be non-negative, got " + std::to_string(threads));
-  return int(threads);
-}
-
-// Sets up an MMP solver from the named parameters: the queue from `algorithm` (a binary heap
-// for MMP, buckets for FWP-MMP), `max_distance`, `batch_size`, and PMMP when parallel.
-template <bool parallel, class NamedParameters>
-void configure_mmp_solver(MMP_solver& solver, Geodesic_algorithm algorithm, const NamedParameters& np)
-{
-  solver.set_max_distance(CGAL::parameters::choose_parameter(
-    CGAL::parameters::get_parameter(np, internal_np::max_distance), std::numeric_limits<double>::infinity()));
-  solver.set_queue(algorithm == MMP ? MMP_solver::BINARY_HEAP : MMP_solver::BUCKETS);
-  solver.set_batch_size(batch_size_parameter(np, default_window_batch_size));
-  if constexpr(parallel)
-    solver.set_parallel();
-}
-
-// Runs a solver, in a task arena of `threads` threads (0: TBB's choice) when parallel: the
-// arena bounds the threads of this call only, never a process-wide setting.
-template <bool parallel, class Solver>
-void run_solver(Solver& solver, int threads)
-{
-#ifdef CGAL_LINKED_WITH_TBB
-  if constexpr(parallel) {
-    tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
-    sanitizer_release(&solver);
-    arena.execute([&] {
-      sanitizer_acquire(&solver);
-      solver.run();
-      sanitizer_release(&solver);
-    });
-    sanitizer_acquire(&solver);
-    return;
-  }
-#endif
-  (void)threads;
-  solver.run();
-}
-
-} // namespace internal
-} // namespace Geodesics_3
 
 /// \ingroup PkgGeodesics3Ref
 /// computes the geodesic distance from the nearest of `sources` to every vertex of `tm` and
@@ -269,73 +127,32 @@ void geodesic_distances(const TriangleMesh& tm, VertexDistanceMap vertex_distanc
                 "use CGAL::Sequential_tag or CGAL::Parallel_if_available_tag");
 #endif
   constexpr bool parallel = std::is_same<ConcurrencyTag, CGAL::Parallel_tag>::value;
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
+  namespace internal = Geodesics_3::internal;
+  typedef internal::Vertex_point_map_of<TriangleMesh, NamedParameters> Vertex_point_map;
+  const internal::Solver_settings settings = internal::read_solver_settings(np, VTP);
 
-  const auto start = std::chrono::steady_clock::now();
-  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                    get_const_property_map(CGAL::vertex_point, tm));
-  const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
-  const auto fim = CGAL::get_initialized_face_index_map(tm, np);
-  const Geodesic_algorithm algorithm =
-    choose_parameter(get_parameter(np, CGAL::internal_np::algorithm), VTP);
-  if(algorithm != VTP && algorithm != MMP && algorithm != FWP_MMP)
-    throw Geodesic_error("unknown geodesic algorithm " + std::to_string(int(algorithm)));
-  constexpr bool has_approximation = !std::is_same<decltype(get_parameter(np, internal_np::approximation)),
-                                                   CGAL::internal_np::Param_not_found>::value;
-  constexpr bool has_stop_vertices = !std::is_same<decltype(get_parameter(np, internal_np::stop_vertices)),
-                                                   CGAL::internal_np::Param_not_found>::value;
-  const int threads = Geodesics_3::internal::number_of_threads_parameter(np);
-  const double max_distance = choose_parameter(get_parameter(np, internal_np::max_distance),
-                                               Geodesics_3::internal::VTP_solver::infinity());
-
-  Geodesics_3::internal::Mesh_cache cache;
-  Geodesics_3::internal::build_mesh_cache(tm, vpm, vim, fim, cache);
-  const auto sources_in_cache = Geodesics_3::internal::to_source_points(tm, vim, fim, sources);
-  auto finish = [&](const auto& solver, double seconds_setup) {
-    const std::vector<double>& d = solver.distances();
-    for(vertex_descriptor v : vertices(tm))
-      put(vertex_distance_map, v, d[get(vim, v)]);
-    Geodesic_statistics* stats = choose_parameter(get_parameter(np, internal_np::statistics),
-                                                  static_cast<Geodesic_statistics*>(nullptr));
-    if(stats) {
-      *stats = solver.statistics();
-      stats->seconds_setup = seconds_setup;
-    }
-  };
-
-  if(algorithm != VTP) {
-    if(has_approximation)
-      throw Geodesic_error("approximation works with the VTP algorithm only");
-    if(has_stop_vertices)
-      throw Geodesic_error("stop_vertices works with the VTP algorithm only");
-    Geodesics_3::internal::MMP_solver solver(cache);
-    for(const auto& s : sources_in_cache)
-      solver.add_source(s);
-    Geodesics_3::internal::configure_mmp_solver<parallel>(solver, algorithm, np);
-    const double seconds_setup = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    Geodesics_3::internal::run_solver<parallel>(solver, threads);
-    finish(solver, seconds_setup);
+  if(settings.algorithm != VTP) { // the MMP family keeps its windows for queries: the same as a build
+    Surface_mesh_geodesic_paths<TriangleMesh, ConcurrencyTag, Vertex_point_map> paths(tm, np);
+    if constexpr(internal::is_range<Sources>::value)
+      paths.add_sources(sources);
+    else
+      paths.add_source(sources);
+    paths.build(np);
+    paths.vertex_distances(vertex_distance_map);
     return;
   }
 
-  Geodesics_3::internal::VTP_solver solver(cache);
-  for(const auto& s : sources_in_cache)
+  const internal::Mesh_setup<TriangleMesh, Vertex_point_map> mesh(tm, np);
+  internal::VTP_solver solver(mesh.cache(), settings, parallel);
+  for(const internal::Source_point& s : mesh.source_points(sources))
     solver.add_source(s);
-  solver.set_max_distance(max_distance);
-  if constexpr(has_approximation)
-    solver.set_approximation(double(get_parameter(np, internal_np::approximation)));
-  solver.set_batch_size(Geodesics_3::internal::batch_size_parameter(np, default_batch_size));
-  if constexpr(parallel)
-    solver.set_parallel();
-  if constexpr(has_stop_vertices) {
-    for(vertex_descriptor v : get_parameter(np, internal_np::stop_vertices))
-      solver.add_stop_vertex(static_cast<int>(get(vim, v)));
+  if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::stop_vertices_t>::value) {
+    for(auto v : parameters::get_parameter(np, internal_np::stop_vertices))
+      solver.add_stop_vertex(mesh.index(v));
   }
-  const double seconds_setup = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  Geodesics_3::internal::run_solver<parallel>(solver, threads);
-  finish(solver, seconds_setup);
+  internal::run_solver<parallel>(solver, settings.number_of_threads);
+  mesh.write_vertex_values(vertex_distance_map, solver.distances());
+  internal::report_statistics(settings, solver.statistics(), mesh.seconds());
 }
 
 } // namespace CGAL_ext

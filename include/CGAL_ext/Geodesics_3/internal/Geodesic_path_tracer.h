@@ -3,7 +3,11 @@
 #define CGAL_EXT_GEODESICS_3_INTERNAL_GEODESIC_PATH_TRACER_H
 
 #include <CGAL_ext/Geodesics_3/Geodesic_error.h>
-#include <CGAL_ext/Geodesics_3/internal/MMP_solver.h>
+#include <CGAL_ext/Geodesics_3/Tolerances.h>
+#include <CGAL_ext/Geodesics_3/internal/Edge_window_store.h>
+#include <CGAL_ext/Geodesics_3/internal/Mesh_cache.h>
+#include <CGAL_ext/Geodesics_3/internal/Sources.h>
+#include <CGAL_ext/Geodesics_3/internal/Window.h>
 
 #include <algorithm>
 #include <array>
@@ -56,9 +60,17 @@ struct Surface_location
 class Geodesic_path_tracer
 {
 public:
-  explicit Geodesic_path_tracer(const MMP_solver& solver) : m_solver(solver), m_mesh(solver.mesh())
+  /// Reads the windows kept on the edges, the vertices' distances and nearest sources, the
+  /// sources, and the max distance of an MMP build; all must outlive the tracer.
+  Geodesic_path_tracer(const Edge_window_store& windows, const std::vector<double>& distances,
+                       const std::vector<int>& nearest_sources, const std::vector<Source_point>& sources,
+                       double max_distance)
+    : m_windows(windows)
+    , m_mesh(windows.mesh())
+    , m_distance(distances)
+    , m_nearest_source(nearest_sources)
+    , m_max_distance(max_distance)
   {
-    const std::vector<Source_point>& sources = solver.sources();
     for(std::size_t i = 0; i < sources.size(); ++i) {
       if(sources[i].vertex >= 0)
         continue;
@@ -106,8 +118,8 @@ public:
   double distance(const Surface_location& p, int& nearest_source) const
   {
     if(p.kind == Surface_location::VERTEX) {
-      nearest_source = m_solver.nearest_sources()[p.vertex];
-      return m_solver.distances()[p.vertex];
+      nearest_source = m_nearest_source[p.vertex];
+      return m_distance[p.vertex];
     }
     const Candidate c = best_way_to(p);
     nearest_source = within_limit(c.distance) ? c.source : -1;
@@ -122,7 +134,7 @@ public:
     // The first step is the target's distance: a vertex has it stored, a point is searched once.
     Candidate first;
     if(target.kind == Surface_location::VERTEX) {
-      if(!within_limit(m_solver.distances()[target.vertex]))
+      if(!within_limit(m_distance[target.vertex]))
         return false;
     } else {
       first = best_way_to(target);
@@ -140,7 +152,7 @@ public:
     Window_geometry crossed_window{0., 0., 0., 0., 0.};
     const std::size_t max_steps = 4 * (m_mesh.number_of_faces + m_mesh.number_of_vertices) + 16;
     for(std::size_t step = 0; step < max_steps; ++step) {
-      if(p.kind == Surface_location::VERTEX && m_solver.distances()[p.vertex] == 0)
+      if(p.kind == Surface_location::VERTEX && m_distance[p.vertex] == 0)
         return true; // a source vertex
       Candidate c = first;
       first = Candidate();
@@ -148,14 +160,14 @@ public:
         // The path goes on straight: through one edge of the face beyond, most often the one
         // the last window's pseudo-source lies behind; else anywhere in that face.
         const std::array<double, 3> b = barycentric_in(face_beyond, p);
-        const double good_enough = left + 1e-12 * (left + m_mesh.mean_edge_length);
+        const double good_enough = left + path_round_off_ratio * (left + m_mesh.mean_edge_length);
         const int exit = exit_halfedge(crossed, crossed_x, crossed_window);
         if(exit < 0 || !best_through_edge(exit, b, c, good_enough)) {
           c = Candidate();
           best_in_face(face_beyond, b, c, left);
         }
       }
-      if(c.kind == Candidate::NONE || (face_beyond >= 0 && c.distance > left + 1e-9 * (left + m_mesh.mean_edge_length)))
+      if(c.kind == Candidate::NONE || (face_beyond >= 0 && c.distance > left + path_search_ratio * (left + m_mesh.mean_edge_length)))
         c = best_way_to(p); // the window that led here was clipped since: look everywhere
       if(!(c.distance < infinity()))
         break;
@@ -241,7 +253,7 @@ private:
   };
 
   // Reached, and within the max distance.
-  bool within_limit(double d) const { return d < infinity() && d <= m_solver.max_distance(); }
+  bool within_limit(double d) const { return d < infinity() && d <= m_max_distance; }
 
   Surface_location on_edge(int h, double t) const
   {
@@ -302,11 +314,11 @@ private:
   {
     const std::array<double, 2> q = m_mesh.point_in_frame(h, b);
     const double qx = q[0], qy = q[1];
-    const double tolerance = 1e-9 * m_mesh.frame[h].length;
-    for(const Edge_window* ew = m_solver.windows_of_edge(h); ew; ew = ew->next) {
+    const double tolerance = path_search_ratio * m_mesh.frame[h].length;
+    for(const Edge_window* ew = m_windows.windows_of_edge(h); ew; ew = ew->next) {
       if(ew->halfedge != h)
         continue; // enters the face on the other side
-      const Window_geometry w = m_solver.in_frame_of(*ew, h);
+      const Window_geometry w = m_windows.in_frame_of(*ew, h);
       const double x = w.sx + (qx - w.sx) * (-w.sy) / (qy - w.sy); // where the ray to p crosses
       if(!(x >= w.b0 - tolerance && x <= w.b1 + tolerance))
         continue;
@@ -356,7 +368,7 @@ private:
   void best_in_face(int f, const std::array<double, 3>& b, Candidate& best,
                     double expected = -std::numeric_limits<double>::infinity()) const
   {
-    const double good_enough = expected + 1e-12 * (std::abs(expected) + m_mesh.mean_edge_length);
+    const double good_enough = expected + path_round_off_ratio * (std::abs(expected) + m_mesh.mean_edge_length);
     // p in the frame of half-edge 3f
     const std::array<double, 2> p = m_mesh.point_in_frame(3 * f, b);
     const double px = p[0], py = p[1];
@@ -365,7 +377,7 @@ private:
       if(b[k] >= 1 - snap)
         continue; // p is this corner
       const int u = m_mesh.source(3 * f + k);
-      const double du = m_solver.distances()[u];
+      const double du = m_distance[u];
       if(!(du < infinity()))
         continue;
       std::array<double, 3> corner{{0., 0., 0.}};
@@ -376,7 +388,7 @@ private:
         vertex_way.kind = Candidate::VERTEX;
         vertex_way.distance = d;
         vertex_way.index = u;
-        vertex_way.source = m_solver.nearest_sources()[u];
+        vertex_way.source = m_nearest_source[u];
       }
     }
     for(int k = 0; k < 3; ++k) {
@@ -398,14 +410,17 @@ private:
         best.source = it->source;
       }
     }
-    if(vertex_way.distance < best.distance - 1e-12 * (best.distance + m_mesh.mean_edge_length))
+    if(vertex_way.distance < best.distance - path_round_off_ratio * (best.distance + m_mesh.mean_edge_length))
       best = vertex_way;
     else if(best.kind == Candidate::NONE && vertex_way.kind != Candidate::NONE)
       best = vertex_way;
   }
 
-  const MMP_solver& m_solver;
+  const Edge_window_store& m_windows;
   const Mesh_cache& m_mesh;
+  const std::vector<double>& m_distance;
+  const std::vector<int>& m_nearest_source;
+  const double m_max_distance;
   std::vector<Face_source> m_face_sources; // sorted by face
 };
 

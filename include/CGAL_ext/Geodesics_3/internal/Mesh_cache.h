@@ -3,6 +3,7 @@
 #define CGAL_EXT_GEODESICS_3_INTERNAL_MESH_CACHE_H
 
 #include <CGAL_ext/Geodesics_3/Geodesic_error.h>
+#include <CGAL_ext/Geodesics_3/Tolerances.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -38,10 +39,6 @@ struct Halfedge_frame
 /// corner k to corner k+1 of the face, so next/prev/face are arithmetic.
 struct Mesh_cache
 {
-  // Vertices with an angle sum above this are treated as saddles (pseudo-sources). Vertices that
-  // are flat up to round-off are included, so that no thin shadow wedge is ever missed.
-  static constexpr double saddle_angle_tolerance = 1e-6;
-
   std::size_t number_of_vertices = 0;
   std::size_t number_of_faces = 0;
 
@@ -123,8 +120,7 @@ inline void Mesh_cache::finish()
       const double longest =
         std::max({len, std::sqrt(ac[0] * ac[0] + ac[1] * ac[1] + ac[2] * ac[2]),
                   std::hypot(c[0] - b[0], c[1] - b[1], c[2] - b[2])});
-      // A triangle whose height is below 1e-12 of its longest side cannot be unfolded reliably.
-      if(!(len > 0) || !(twice_area > 1e-12 * longest * longest)) {
+      if(!(len > 0) || !(twice_area > degenerate_height_ratio * longest * longest)) {
         std::ostringstream msg;
         msg << "degenerate (zero-area) triangle: face " << f << " (vertices "
             << corner_vertex[3 * f] << ", " << corner_vertex[3 * f + 1] << ", "

@@ -3,6 +3,7 @@
 #define CGAL_EXT_GEODESICS_3_INTERNAL_SOURCES_H
 
 #include <CGAL_ext/Geodesics_3/Geodesic_error.h>
+#include <CGAL_ext/Geodesics_3/Tolerances.h>
 #include <CGAL_ext/Geodesics_3/internal/Mesh_cache.h>
 #include <CGAL_ext/Geodesics_3/internal/Window.h>
 
@@ -24,9 +25,6 @@ struct Source_point
   std::array<double, 3> barycentric{{0., 0., 0.}};
 };
 
-/// Barycentric coordinates below this are zero: the point is on an edge, or at a corner.
-constexpr double barycentric_snap = 1e-12;
-
 /// Throws unless `v` is a vertex index of the mesh; `role` names the point ("source", ...).
 inline void check_vertex_index(const Mesh_cache& m, long v, const char* role)
 {
@@ -45,7 +43,8 @@ inline std::array<double, 3> checked_barycentric(const Mesh_cache& m, long face,
     throw Geodesic_error(std::string(role) + " face " + std::to_string(face) + " is out of range (the mesh has " +
                          std::to_string(m.number_of_faces) + " faces)");
   const double sum = b[0] + b[1] + b[2];
-  if(!std::isfinite(sum) || std::abs(sum - 1.) > 1e-9 || b[0] < -1e-12 || b[1] < -1e-12 || b[2] < -1e-12) {
+  if(!std::isfinite(sum) || std::abs(sum - 1.) > barycentric_sum_tolerance || b[0] < -barycentric_snap ||
+     b[1] < -barycentric_snap || b[2] < -barycentric_snap) {
     std::ostringstream msg;
     msg.precision(17);
     msg << "barycentric coordinates (" << b[0] << ", " << b[1] << ", " << b[2] << ") of the " << role << " in face "
@@ -152,7 +151,7 @@ void emit_face_point_windows(const Mesh_cache& m, const Source_point& s, Relax r
       w.sx = f.length - x;
       w.sy = -y;
       w.sigma = 0;
-        add(g, w);
+      add(g, w);
     }
   };
   for_each_face_seeing(m, s, emit_in_face);

@@ -3,11 +3,12 @@
 #define CGAL_EXT_GEODESICS_3_INTERNAL_VTP_SOLVER_H
 
 #include <CGAL_ext/Geodesics_3/Geodesic_error.h>
-#include <CGAL_ext/Geodesics_3/Geodesic_statistics.h>
 #include <CGAL_ext/Geodesics_3/internal/Mesh_cache.h>
+#include <CGAL_ext/Geodesics_3/internal/Object_pool.h>
+#include <CGAL_ext/Geodesics_3/internal/Parallel_for.h>
+#include <CGAL_ext/Geodesics_3/internal/Priority_queues.h>
+#include <CGAL_ext/Geodesics_3/internal/Solver_base.h>
 #include <CGAL_ext/Geodesics_3/internal/Sources.h>
-#include <CGAL_ext/Geodesics_3/internal/Parallel_loop.h>
-#include <CGAL_ext/Geodesics_3/internal/Vertex_queue.h>
 #include <CGAL_ext/Geodesics_3/internal/Window.h>
 
 #include <algorithm>
@@ -37,8 +38,8 @@ struct List_task
 };
 
 /// Geodesic distances from any number of sources by vertex-oriented triangle propagation
-/// (VTP, thesis chapter 4): exact, or approximate with `set_approximation(lambda)` (AVTP);
-/// sequential, or parallel with `set_parallel()` (PVTP / PAVTP, with TBB).
+/// (VTP, thesis chapter 4): exact, or approximate with the setting `approximation` (AVTP);
+/// sequential, or parallel (PVTP / PAVTP, with TBB).
 ///
 /// Windows are kept only on the wavefront, grouped in lists per half-edge: the list of
 /// half-edge h holds windows on the edge of h that will enter the face of h. Vertices are taken
@@ -61,40 +62,36 @@ struct List_task
 ///   the edge at the point sp where that path crosses it; rays left of sp that would land on the
 ///   far side CB cross that path and are no shorter there, so they are dropped, and
 ///   symmetrically right of sp.
-class VTP_solver
+class VTP_solver : public Solver_base
 {
 public:
-  explicit VTP_solver(const Mesh_cache& mesh)
-    : m_mesh(mesh)
-    , m_distance(mesh.number_of_vertices, infinity())
-    , m_emitted(mesh.number_of_vertices, infinity())
-    , m_taken(mesh.number_of_vertices, 0)
-    , m_emits(mesh.number_of_vertices, 0)
-    , m_is_stop(mesh.number_of_vertices, 0)
-    , m_head(mesh.number_of_halfedges(), nullptr)
-    , m_queued(mesh.number_of_halfedges(), 0)
-    , m_pending(mesh.number_of_halfedges(), 0)
-    , m_buckets(mesh.mean_edge_length / std::min(std::max(1., mesh.mean_anisotropy), max_anisotropy))
-  {
-    m_min_window_length = 1e-10 * mesh.mean_edge_length;
-    for(std::size_t v = 0; v < mesh.number_of_vertices; ++v)
-      m_emits[v] = mesh.is_pseudo_source[v];
-  }
-
-  static double infinity() { return std::numeric_limits<double>::infinity(); }
+  typedef Object_pool<Window> Window_pool;
 
   /// The guard band of the approximation, in mean edge lengths (thesis 4.3.2, lambda_g).
   static constexpr double approximation_guard = 8.;
   /// Buckets are h / tau wide (thesis 4.2.2); a few slivers must not make them vanishingly thin.
   static constexpr double max_anisotropy = 4.;
 
-  void add_source(const Source_point& s) { m_sources.push_back(normalized_source(m_mesh, s)); }
-
-  void set_max_distance(double d)
+  /// `settings` were checked by `read_solver_settings()`. When `parallel` (PVTP), vertices are
+  /// taken from buckets until the batch size of lists are scheduled, and the scheduled lists are
+  /// propagated on the threads of the task arena `run()` is called in. With an approximation
+  /// (AVTP), every time the wavefront passes a multiple of lambda times the mean edge length its
+  /// windows are dropped and its vertices become sources carrying their distances.
+  VTP_solver(const Mesh_cache& mesh, const Solver_settings& settings, bool parallel)
+    : Solver_base(mesh, settings, parallel)
+    , m_is_taken(mesh.number_of_vertices, 0)
+    , m_emits_when_taken(mesh.is_pseudo_source)
+    , m_is_stop(mesh.number_of_vertices, 0)
+    , m_head(mesh.number_of_halfedges(), nullptr)
+    , m_is_scheduled(mesh.number_of_halfedges(), 0)
+    , m_is_waiting(mesh.number_of_halfedges(), 0)
+    , m_buckets(mesh.mean_edge_length / std::min(std::max(1., mesh.mean_anisotropy), max_anisotropy))
+    , m_reset_step(settings.approximation * mesh.mean_edge_length)
+    // What a reset keeps depends on the order in which lists were propagated: the approximation
+    // always takes vertices in batches from buckets, so that run sequentially or on any number
+    // of threads it gives the same distances.
+    , m_batched(parallel || settings.approximation > 0)
   {
-    if(!(d >= 0))
-      throw Geodesic_error("max distance must be non-negative, got " + std::to_string(d));
-    m_max_distance = d;
   }
 
   void add_stop_vertex(int v)
@@ -106,69 +103,28 @@ public:
     }
   }
 
-  /// AVTP: every time the wavefront passes a multiple of lambda times the mean edge length, its
-  /// windows are dropped and its vertices become sources carrying their distances.
-  void set_approximation(double lambda)
-  {
-    if(!(lambda > 0) || !std::isfinite(lambda)) {
-      std::ostringstream msg;
-      msg << "approximation lambda must be positive and finite, got " << lambda;
-      throw Geodesic_error(msg.str());
-    }
-    m_reset_step = lambda * m_mesh.mean_edge_length;
-    // What a reset keeps depends on the order in which lists were propagated: the approximation
-    // always takes vertices in batches from buckets, so that run sequentially or on any number
-    // of threads it gives the same distances.
-    m_batched = true;
-  }
-
-  /// PVTP: vertices are taken from buckets until the batch size of lists are scheduled, and the
-  /// scheduled lists are propagated in parallel. The caller runs `run()` inside the
-  /// `tbb::task_arena` that bounds the number of threads.
-  void set_parallel()
-  {
-#ifndef CGAL_LINKED_WITH_TBB
-    throw Geodesic_error("parallel propagation needs TBB (CGAL_LINKED_WITH_TBB is not defined)");
-#endif
-    m_parallel = true;
-    m_batched = true;
-  }
-
-  /// How many lists the batched solvers (parallel or approximate) propagate together at most.
-  void set_batch_size(std::size_t batch_size)
-  {
-    if(batch_size == 0)
-      throw Geodesic_error("batch size must be positive");
-    m_batch_size = batch_size;
-  }
-
   /// Runs the propagation; distances beyond the max distance, or beyond the farthest stop
   /// vertex when stop vertices are given, are +infinity.
   void run()
   {
-    const auto start = std::chrono::steady_clock::now();
-    if(m_sources.empty())
-      throw Geodesic_error("no source was given");
-    m_main_slot = use_one_slot_per_thread(m_pool, m_parallel);
+    const auto start = Clock::now();
+    check_sources();
+    m_main_slot = m_pool.use_one_slot_per_thread(m_parallel);
     for(const Source_point& s : m_sources) {
       if(s.vertex >= 0) {
-        m_emits[s.vertex] = 1;
+        m_emits_when_taken[s.vertex] = 1;
         relax(s.vertex, 0.);
       } else {
         emit_from_face_point(s);
       }
     }
     m_next_reset = m_reset_step;
-    Thread_team::run(m_parallel, [this](Thread_team& team) {
-      m_team = &team;
-      do {
-        if(m_batched)
-          take_vertices_in_batches();
-        else
-          take_vertices_one_by_one();
-      } while(flush_pending());
-      m_team = nullptr;
-    });
+    do {
+      if(m_batched)
+        take_vertices_in_batches();
+      else
+        take_vertices_one_by_one();
+    } while(flush_waiting_lists());
 
     update_stop_limit();
     const double l = limit();
@@ -176,22 +132,10 @@ public:
       for(double& d : m_distance)
         if(d > l)
           d = infinity();
-    m_statistics.vertices = m_mesh.number_of_vertices;
-    m_statistics.faces = m_mesh.number_of_faces;
-    m_statistics.peak_windows = m_peak_windows;
-    m_statistics.peak_window_bytes = m_pool.bytes();
-    m_statistics.seconds_solve = seconds_since(start);
+    finish_statistics(m_pool, start);
   }
-
-  const std::vector<double>& distances() const { return m_distance; }
-  const Geodesic_statistics& statistics() const { return m_statistics; }
 
 private:
-  static double seconds_since(std::chrono::steady_clock::time_point t)
-  {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-  }
-
   // The distance up to which results are wanted.
   double limit() const { return std::min(m_max_distance, m_stop_limit); }
 
@@ -212,7 +156,7 @@ private:
   {
     if(d < m_distance[v]) {
       m_distance[v] = d;
-      if(!m_taken[v] || m_emits[v]) {
+      if(!m_is_taken[v] || m_emits_when_taken[v]) {
         if(m_batched)
           m_buckets.push(d, v);
         else
@@ -248,21 +192,21 @@ private:
   {
     std::vector<Vertex_entry>& bucket = m_bucket_entries;
     for(;;) {
-      const auto start = std::chrono::steady_clock::now();
+      const auto start = Clock::now();
       const double barrier = m_reset_step > 0 ? std::min(limit(), m_next_reset) : limit();
       bool took_any = false;
       double lowest_waiting = infinity();
       // One bucket a round that gives a vertex: its vertices lie in a band about one edge wide,
       // close enough to the true order that taking them together costs few extra windows. A
       // bucket of stale entries only does not count.
-      while(!took_any && m_fifo.size() < m_batch_size && lowest_waiting == infinity()) {
+      while(!took_any && m_scheduled_lists.size() < m_batch_size && lowest_waiting == infinity()) {
         m_buckets.pop_lowest(bucket);
         if(bucket.empty())
           break;
         for(const Vertex_entry& e : bucket) {
           if(e.first > m_distance[e.second])
             continue; // stale
-          if(e.first > barrier || m_fifo.size() >= m_batch_size) {
+          if(e.first > barrier || m_scheduled_lists.size() >= m_batch_size) {
             m_buckets.push(e.first, e.second);
             if(e.first > barrier)
               lowest_waiting = std::min(lowest_waiting, e.first);
@@ -283,38 +227,30 @@ private:
     }
   }
 
-  bool inside_swept_region(int h) const { return m_taken[m_mesh.source(h)] || m_taken[m_mesh.target(h)]; }
+  bool inside_swept_region(int h) const { return m_is_taken[m_mesh.source(h)] || m_is_taken[m_mesh.target(h)]; }
 
   void schedule(int h)
   {
-    if(m_head[h] && !m_queued[h]) {
-      m_queued[h] = 1;
-      m_fifo.push_back(h);
+    if(m_head[h] && !m_is_scheduled[h]) {
+      m_is_scheduled[h] = 1;
+      m_scheduled_lists.push_back(h);
     }
   }
 
   // Adds a chain of windows (already trimmed) to the list of half-edge h, and schedules the list
-  // when it lies in the swept region. The order of windows in a list does not matter: they are
+  // when it lies in the swept region (or when every list is being flushed); otherwise it waits. The order of windows in a list does not matter: they are
   // sorted when the list is propagated.
   void add_chain(int h, const Window_chain& chain)
   {
     chain.tail->next = m_head[h];
     m_head[h] = chain.head;
     m_statistics.windows_created += chain.size;
-    if(m_force || inside_swept_region(h))
+    if(m_flushing || inside_swept_region(h))
       schedule(h);
-    else if(!m_pending[h]) {
-      m_pending[h] = 1;
-      m_pending_lists.push_back(h);
+    else if(!m_is_waiting[h]) {
+      m_is_waiting[h] = 1;
+      m_waiting_lists.push_back(h);
     }
-  }
-
-  // Trims a window by the end vertices of the edge of h (and the limit): false if nothing is
-  // left. `d_from` and `d_to` are the distances to use for the source and target of h.
-  bool keep_window(Window& w, int h, double d_from, double d_to) const
-  {
-    double key;
-    return trim_by_edge_vertices(w, m_mesh.frame[h].length, d_from, d_to, key) && key <= m_limit_cache;
   }
 
   void insert_window(int h, const Window_geometry& geometry)
@@ -326,7 +262,7 @@ private:
       Window_chain chain;
       chain.push_back(m_pool.allocate(m_main_slot, w));
       add_chain(h, chain);
-      note_live_windows();
+      note_live_windows(m_pool);
     }
   }
 
@@ -336,14 +272,14 @@ private:
   {
     const double sigma = m_distance[v];
     m_emitted[v] = sigma;
-    m_limit_cache = limit();
+    m_window_limit = limit();
     emit_vertex_windows(
       m_mesh, v, sigma, [&](int u, double d) { relax(u, d); }, [&](int g, const Window_geometry& w) { insert_window(g, w); });
   }
 
   void emit_from_face_point(const Source_point& s)
   {
-    m_limit_cache = limit();
+    m_window_limit = limit();
     emit_face_point_windows(
       m_mesh, s, [&](int u, double d) { relax(u, d); }, [&](int g, const Window_geometry& w) { insert_window(g, w); });
   }
@@ -351,12 +287,12 @@ private:
   void take_vertex(int v)
   {
     ++m_statistics.vertices_popped;
-    if(!m_taken[v]) {
-      m_taken[v] = 1;
+    if(!m_is_taken[v]) {
+      m_is_taken[v] = 1;
       if(m_is_stop[v] && ++m_stops_taken == m_stop_vertices.size())
         update_stop_limit();
     }
-    if(m_emits[v] && m_distance[v] < m_emitted[v])
+    if(m_emits_when_taken[v] && m_distance[v] < m_emitted[v])
       emit_from_vertex(v);
     m_mesh.for_each_outgoing(v, [&](int h) {
       const int in = Mesh_cache::prev(h);
@@ -376,13 +312,13 @@ private:
   {
     if(m_reset_step <= 0 || d <= m_next_reset)
       return;
-    const auto start = std::chrono::steady_clock::now();
+    const auto start = Clock::now();
     // When several radii are passed at once, one reset at the last of them does.
     const double r = std::max(m_next_reset, std::floor(d / m_reset_step) * m_reset_step);
     const double guard = r + approximation_guard * m_mesh.mean_edge_length;
     auto mark = [&](const Vertex_entry& e) {
-      if(!m_taken[e.second] && m_distance[e.second] <= guard)
-        m_emits[e.second] = 1;
+      if(!m_is_taken[e.second] && m_distance[e.second] <= guard)
+        m_emits_when_taken[e.second] = 1;
     };
     if(m_batched)
       m_buckets.for_each(mark);
@@ -392,15 +328,15 @@ private:
     // vertices are within the band. Lists that were emptied or swept since they were recorded
     // are forgotten here, so that each reset costs the size of the wavefront, not of its history.
     std::size_t kept = 0;
-    for(int h : m_pending_lists) {
+    for(int h : m_waiting_lists) {
       if(m_head[h] && m_distance[m_mesh.source(h)] <= guard && m_distance[m_mesh.target(h)] <= guard)
         clear_list(h);
       if(m_head[h] && !inside_swept_region(h))
-        m_pending_lists[kept++] = h;
+        m_waiting_lists[kept++] = h;
       else
-        m_pending[h] = 0;
+        m_is_waiting[h] = 0;
     }
-    m_pending_lists.resize(kept);
+    m_waiting_lists.resize(kept);
     m_next_reset = r + m_reset_step;
     ++m_statistics.wavefront_resets;
     m_statistics.seconds_selection += seconds_since(start);
@@ -412,69 +348,67 @@ private:
     m_head[h] = nullptr;
   }
 
-  void note_live_windows() { m_peak_windows = std::max(m_peak_windows, m_pool.live()); }
-
   // Propagates the scheduled lists, and the lists they schedule, until none is left.
   void drain()
   {
-    m_limit_cache = limit();
+    m_window_limit = limit();
     if(!m_batched) {
       List_task& task = m_task_one;
-      for(std::size_t i = 0; i < m_fifo.size(); ++i) {
-        detach(m_fifo[i], task);
+      for(std::size_t i = 0; i < m_scheduled_lists.size(); ++i) {
+        detach(m_scheduled_lists[i], task);
         propagate(task, m_main_slot);
         merge(task);
-        note_live_windows();
+        note_live_windows(m_pool);
       }
-      m_fifo.clear();
+      m_scheduled_lists.clear();
       return;
     }
-    while(!m_fifo.empty()) {
-      const std::size_t n = m_fifo.size();
+    while(!m_scheduled_lists.empty()) {
+      const std::size_t n = m_scheduled_lists.size();
       if(m_tasks.size() < n)
         m_tasks.resize(n);
       for(std::size_t i = 0; i < n; ++i)
-        detach(m_fifo[i], m_tasks[i]);
-      m_fifo.clear();
-      auto start = std::chrono::steady_clock::now();
+        detach(m_scheduled_lists[i], m_tasks[i]);
+      m_scheduled_lists.clear();
+      auto start = Clock::now();
       propagate_tasks(n);
       m_statistics.seconds_propagation += seconds_since(start);
-      start = std::chrono::steady_clock::now();
+      start = Clock::now();
       for(std::size_t i = 0; i < n; ++i)
         merge(m_tasks[i]);
-      note_live_windows();
+      note_live_windows(m_pool);
       m_statistics.seconds_merge += seconds_since(start);
     }
   }
 
   void propagate_tasks(std::size_t n)
   {
-    // Each task reads shared state that no task writes, and writes only itself. Chunks of a
-    // fixed size: lists are small, uniform units of work.
-    m_team->for_each_index(n, 8, [this](std::size_t i, std::size_t slot) { propagate(m_tasks[i], slot); });
+    // Each task reads shared state that no task writes, and writes only itself and its
+    // thread's pool slot.
+    for_each_index(m_parallel, n, list_grain, [this](std::size_t i, std::size_t slot) { propagate(m_tasks[i], slot); });
   }
 
   // Propagates every list that still holds windows, whether or not its edge was swept; used
   // once no vertex within the limit is left, so that every path shorter than the limit is done.
   // Returns whether anything was propagated (vertices may then need to be taken again).
-  bool flush_pending()
+  bool flush_waiting_lists()
   {
     update_stop_limit();
-    m_force = true;
-    for(int h : m_pending_lists) {
-      m_pending[h] = 0;
+    m_flushing = true;
+    for(int h : m_waiting_lists) {
+      m_is_waiting[h] = 0;
       schedule(h);
     }
-    m_pending_lists.clear();
-    const bool any = !m_fifo.empty();
+    m_waiting_lists.clear();
+    const bool any = !m_scheduled_lists.empty();
     drain();
-    m_force = false;
+    m_flushing = false;
     return any;
   }
 
   void detach(int h, List_task& task)
   {
-    m_queued[h] = 0;
+    m_is_scheduled[h] = 0;
     task.halfedge = h;
     task.input = m_head[h];
     m_head[h] = nullptr;
@@ -517,26 +451,17 @@ private:
     }
     task.apex_distance = best;
 
-    const int g_ac = m_mesh.opposite(Mesh_cache::prev(h));
-    const int g_cb = m_mesh.opposite(Mesh_cache::next(h));
     const double d_apex = std::min(m_distance[m_mesh.apex(h)], best);
-    Child_edge to_ac, to_cb;
-    child_edges(m_mesh, h, to_ac, to_cb);
-    Window child;
+    const Face_crossing across = face_crossing(m_mesh, h);
     for(const Window& w : windows) {
       const double crossing = apex_crossing(w, f.apex_x, f.apex_y);
-      if(g_ac >= 0) {
-        const double hi = std::min({w.b1, split, crossing});
-        if(hi > w.b0 && make_child(w, w.b0, hi, to_ac, m_min_window_length, child) &&
-           keep_window(child, g_ac, d_from, d_apex)) // g_ac runs from A to C
-          task.to_ac.push_back(m_pool.allocate(slot, child));
-      }
-      if(g_cb >= 0) {
-        const double lo = std::max({w.b0, split, crossing});
-        if(w.b1 > lo && make_child(w, lo, w.b1, to_cb, m_min_window_length, child) &&
-           keep_window(child, g_cb, d_apex, d_to)) // g_cb runs from C to B
-          task.to_cb.push_back(m_pool.allocate(slot, child));
-      }
+      make_children(w, across, std::min(split, crossing), std::max(split, crossing), m_min_window_length,
+                    [&](int g, const Window_geometry& geometry, bool onto_ac) {
+                      Window child{geometry, nullptr};
+                      // A -> C runs from the source of h to the apex, C -> B from the apex to the target
+                      if(onto_ac ? keep_window(child, g, d_from, d_apex) : keep_window(child, g, d_apex, d_to))
+                        (onto_ac ? task.to_ac : task.to_cb).push_back(m_pool.allocate(slot, child));
+                    });
     }
   }
 
@@ -579,16 +504,17 @@ private:
                   windows.end());
   }
 
-  const Mesh_cache& m_mesh;
-  std::vector<double> m_distance;
-  std::vector<double> m_emitted; // sigma of the last windows a vertex emitted
-  std::vector<std::uint8_t> m_taken;
-  std::vector<std::uint8_t> m_emits; // pseudo-source, source, or made a source by a reset
+  // Chunks of a fixed size: lists are small units of work, but uneven.
+  static constexpr std::size_t list_grain = 8;
+
+  std::vector<std::uint8_t> m_is_taken;
+  std::vector<std::uint8_t> m_emits_when_taken; // pseudo-source, source, or made a source by a reset
   std::vector<std::uint8_t> m_is_stop;
   std::vector<Window*> m_head; // the list of each half-edge
-  std::vector<std::uint8_t> m_queued, m_pending;
-  std::vector<int> m_pending_lists;
-  std::vector<int> m_fifo;
+  std::vector<std::uint8_t> m_is_scheduled; // per half-edge: its list is in m_scheduled_lists
+  std::vector<std::uint8_t> m_is_waiting;   // per half-edge: its list is in m_waiting_lists
+  std::vector<int> m_waiting_lists;   // lists holding windows outside the swept region
+  std::vector<int> m_scheduled_lists; // lists to propagate, in order
   Vertex_heap m_heap;
   Vertex_buckets m_buckets;
   std::vector<Vertex_entry> m_bucket_entries;
@@ -596,22 +522,13 @@ private:
   std::vector<List_task> m_tasks;
   Window_pool m_pool;
   std::size_t m_main_slot = 0; // the pool slot of the thread running run()
-  std::size_t m_peak_windows = 0;
-  std::vector<Source_point> m_sources;
   std::vector<int> m_stop_vertices;
   std::size_t m_stops_taken = 0;
-  double m_max_distance = infinity();
   double m_stop_limit = infinity();
-  double m_limit_cache = infinity();
-  double m_min_window_length = 0;
-  double m_reset_step = 0; // lambda h, or 0 for exact propagation
+  const double m_reset_step; // lambda h, or 0 for exact propagation
   double m_next_reset = 0;
-  bool m_force = false;
-  bool m_parallel = false; // propagate batches on TBB threads
-  Thread_team* m_team = nullptr; // during run()
-  bool m_batched = false;  // take vertices from buckets, propagate lists in batches
-  std::size_t m_batch_size = 512;
-  Geodesic_statistics m_statistics;
+  bool m_flushing = false; // lists are scheduled whether or not they are in the swept region
+  const bool m_batched;    // take vertices from buckets, propagate lists in batches
 };
 
 } // namespace internal

@@ -2,6 +2,7 @@
 #ifndef CGAL_EXT_GEODESICS_3_INTERNAL_WINDOW_H
 #define CGAL_EXT_GEODESICS_3_INTERNAL_WINDOW_H
 
+#include <CGAL_ext/Geodesics_3/Tolerances.h>
 #include <CGAL_ext/Geodesics_3/internal/Mesh_cache.h>
 
 #include <algorithm>
@@ -130,7 +131,7 @@ inline int equal_distance_points(const Window_geometry& w0, const Window_geometr
   const double a = alpha * alpha - d2;
   const double b = 2 * alpha * beta + 2 * d2 * w0.sx;
   const double c = beta * beta - d2 * (w0.sx * w0.sx + w0.sy * w0.sy);
-  if(std::abs(a) <= 1e-14 * (alpha * alpha + d2)) {
+  if(std::abs(a) <= quadratic_cancellation_ratio * (alpha * alpha + d2)) {
     if(b != 0)
       keep(-c / b);
     return n;
@@ -264,15 +265,43 @@ inline bool make_child(const Window_geometry& w, double lo, double hi, const Chi
   return true;
 }
 
-/// The two child edges of the face of half-edge h = (A -> B) with apex C: the edge A -> C and the
-/// edge C -> B, in the frame of h.
-inline void child_edges(const Mesh_cache& m, int h, Child_edge& to_ac, Child_edge& to_cb)
+/// Where the windows on half-edge h = (A -> B, apex C) go across its face: the half-edges beyond
+/// the edges A -> C and C -> B (-1 on the border; the first runs from A to C, the second from C to
+/// B), and those two edges in the frame of h.
+struct Face_crossing
+{
+  int to_ac, to_cb;
+  Child_edge ac, cb;
+};
+
+inline Face_crossing face_crossing(const Mesh_cache& m, int h)
 {
   const Halfedge_frame& f = m.frame[h];
   const double l_ac = m.frame[Mesh_cache::prev(h)].length;
   const double l_cb = m.frame[Mesh_cache::next(h)].length;
-  to_ac = Child_edge{0., 0., f.apex_x / l_ac, f.apex_y / l_ac, l_ac};
-  to_cb = Child_edge{f.apex_x, f.apex_y, (f.length - f.apex_x) / l_cb, -f.apex_y / l_cb, l_cb};
+  return Face_crossing{m.opposite(Mesh_cache::prev(h)), m.opposite(Mesh_cache::next(h)),
+                       Child_edge{0., 0., f.apex_x / l_ac, f.apex_y / l_ac, l_ac},
+                       Child_edge{f.apex_x, f.apex_y, (f.length - f.apex_x) / l_cb, -f.apex_y / l_cb, l_cb}};
+}
+
+/// The children of `w` across the face: the rays through [b0, min(b1, ac_end)] onto A -> C and
+/// those through [max(b0, cb_start), b1] onto C -> B. `add(halfedge, child, onto_ac)` receives
+/// each child at least `min_length` long, in the frame of the half-edge beyond.
+template <class Add>
+void make_children(const Window_geometry& w, const Face_crossing& c, double ac_end, double cb_start,
+                   double min_length, Add add)
+{
+  Window_geometry child;
+  if(c.to_ac >= 0) {
+    const double hi = std::min(w.b1, ac_end);
+    if(hi > w.b0 && make_child(w, w.b0, hi, c.ac, min_length, child))
+      add(c.to_ac, child, true);
+  }
+  if(c.to_cb >= 0) {
+    const double lo = std::max(w.b0, cb_start);
+    if(w.b1 > lo && make_child(w, lo, w.b1, c.cb, min_length, child))
+      add(c.to_cb, child, false);
+  }
 }
 
 /// Windows linked through `next`, with their last one and their number.
@@ -291,91 +320,6 @@ struct Window_chain
     ++size;
   }
 };
-
-/// Storage of windows (any type with a `next` pointer to its own type): no allocation per
-/// window once the pool has grown to the size of the wavefront, and no sharing between threads.
-/// Each thread uses its own slot: blocks it carved and a list of freed windows (a window freed
-/// by another thread than the one that made it simply joins that thread's list). Windows never
-/// move, so they are linked by pointer.
-template <class T>
-class Object_pool
-{
-public:
-  static constexpr std::size_t block_size = 4096;
-
-  /// Sets the number of slots (threads); only before any window is allocated.
-  void set_number_of_slots(std::size_t n) { m_slots.resize(std::max<std::size_t>(n, 1)); }
-  std::size_t number_of_slots() const { return m_slots.size(); }
-
-  /// An object of the slot, as it was left when freed (value-initialized when new).
-  T* allocate(std::size_t slot)
-  {
-    Slot& s = m_slots[slot];
-    T* p = s.free;
-    if(p)
-      s.free = p->next;
-    else {
-      if(s.used == block_size) {
-        s.blocks.emplace_back(new T[block_size]());
-        s.used = 0;
-      }
-      p = &s.blocks.back()[s.used++];
-    }
-    ++s.live;
-    return p;
-  }
-  T* allocate(std::size_t slot, const T& w)
-  {
-    T* p = allocate(slot);
-    *p = w;
-    return p;
-  }
-  /// Frees `w` and the objects linked after it.
-  void release_chain(std::size_t slot, T* w)
-  {
-    Slot& s = m_slots[slot];
-    while(w) {
-      T* next = w->next;
-      w->next = s.free;
-      s.free = w;
-      --s.live;
-      w = next;
-    }
-  }
-  /// Frees `w` alone.
-  void release(std::size_t slot, T* w)
-  {
-    w->next = nullptr;
-    release_chain(slot, w);
-  }
-  /// Windows alive (exact between parallel steps).
-  std::size_t live() const
-  {
-    std::ptrdiff_t n = 0;
-    for(const Slot& s : m_slots)
-      n += s.live;
-    return std::size_t(n);
-  }
-  std::size_t bytes() const
-  {
-    std::size_t blocks = 0;
-    for(const Slot& s : m_slots)
-      blocks += s.blocks.size();
-    return blocks * block_size * sizeof(T);
-  }
-
-private:
-  struct alignas(64) Slot
-  {
-    T* free = nullptr;
-    std::vector<std::unique_ptr<T[]>> blocks;
-    std::size_t used = block_size;
-    std::ptrdiff_t live = 0; // may go below zero in one slot: windows are freed where they are used
-  };
-  std::vector<Slot> m_slots = std::vector<Slot>(1);
-};
-
-typedef Object_pool<Window> Window_pool;
 
 } // namespace internal
 } // namespace Geodesics_3

@@ -1,6 +1,6 @@
 // Copyright (c) 2026 The CGAL_ext geodesics developers.
-#ifndef CGAL_EXT_GEODESICS_3_INTERNAL_VERTEX_QUEUE_H
-#define CGAL_EXT_GEODESICS_3_INTERNAL_VERTEX_QUEUE_H
+#ifndef CGAL_EXT_GEODESICS_3_INTERNAL_PRIORITY_QUEUES_H
+#define CGAL_EXT_GEODESICS_3_INTERNAL_PRIORITY_QUEUES_H
 
 #include <algorithm>
 #include <cmath>
@@ -12,6 +12,9 @@
 namespace CGAL_ext {
 namespace Geodesics_3 {
 namespace internal {
+
+// The priority queues of the solvers: vertices (VTP) and windows or pseudo-sources (MMP), each
+// entry a (distance, payload) pair.
 
 /// A vertex waiting with the tentative distance it had when it was queued. An entry whose
 /// distance is no longer the vertex's distance is stale and skipped (lazy deletion).
@@ -137,4 +140,4 @@ typedef Bucket_queue<int> Vertex_buckets;
 } // namespace Geodesics_3
 } // namespace CGAL_ext
 
-#endif // CGAL_EXT_GEODESICS_3_INTERNAL_VERTEX_QUEUE_H
+#endif // CGAL_EXT_GEODESICS_3_INTERNAL_PRIORITY_QUEUES_H

@@ -1,0 +1,255 @@
+// Copyright (c) 2026 The CGAL_ext geodesics developers.
+#ifndef CGAL_EXT_GEODESICS_3_INTERNAL_GEODESIC_SETUP_H
+#define CGAL_EXT_GEODESICS_3_INTERNAL_GEODESIC_SETUP_H
+
+// What every public entry point does before and after a solver runs, written once: the named
+// parameters read and checked into one `Solver_settings`, the caller's mesh turned into the
+// solvers' `Mesh_cache` (with the way back from indices to descriptors), sources converted, and
+// the solver run in a task arena of the requested size.
+
+#include <CGAL_ext/Geodesics_3/Geodesic_algorithm.h>
+#include <CGAL_ext/Geodesics_3/Geodesic_error.h>
+#include <CGAL_ext/Geodesics_3/Geodesic_statistics.h>
+#include <CGAL_ext/Geodesics_3/Named_function_parameters.h>
+#include <CGAL_ext/Geodesics_3/internal/Mesh_cache.h>
+#include <CGAL_ext/Geodesics_3/internal/Sources.h>
+#include <CGAL_ext/Geodesics_3/internal/Thread_sanitizer.h>
+
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/boost/graph/properties.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/task_arena.h>
+#endif
+
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <functional>
+#include <iterator>
+#include <limits>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace CGAL_ext {
+namespace Geodesics_3 {
+namespace internal {
+
+/// The named parameters that steer a solver, read and checked.
+struct Solver_settings
+{
+  Geodesic_algorithm algorithm = VTP;
+  double max_distance = std::numeric_limits<double>::infinity();
+  double approximation = 0; // lambda of AVTP; 0: exact
+  int number_of_threads = 0; // 0: TBB's choice
+  std::size_t batch_size = default_batch_size;
+  Geodesic_statistics* statistics = nullptr; // where to report, if anywhere
+};
+
+/// Reads `algorithm` (default `default_algorithm`), `max_distance`, `approximation`,
+/// `number_of_threads`, `batch_size` (default by algorithm) and `statistics` from `np`, and
+/// checks each, with one message each; `approximation` and `stop_vertices` go with VTP only.
+template <class NamedParameters>
+Solver_settings read_solver_settings(const NamedParameters& np, Geodesic_algorithm default_algorithm)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  using CGAL::parameters::is_default_parameter;
+  Solver_settings s;
+  s.algorithm = choose_parameter(get_parameter(np, CGAL::internal_np::algorithm), default_algorithm);
+  if(s.algorithm != VTP && s.algorithm != MMP && s.algorithm != FWP_MMP)
+    throw Geodesic_error("unknown geodesic algorithm " + std::to_string(int(s.algorithm)));
+
+  s.max_distance = choose_parameter(get_parameter(np, internal_np::max_distance), s.max_distance);
+  if(!(s.max_distance >= 0)) {
+    std::ostringstream msg;
+    msg << "max distance must be non-negative, got " << s.max_distance;
+    throw Geodesic_error(msg.str());
+  }
+
+  if constexpr(!is_default_parameter<NamedParameters, internal_np::approximation_t>::value) {
+    s.approximation = double(get_parameter(np, internal_np::approximation));
+    if(!(s.approximation > 0) || !std::isfinite(s.approximation)) {
+      std::ostringstream msg;
+      msg << "approximation lambda must be positive and finite, got " << s.approximation;
+      throw Geodesic_error(msg.str());
+    }
+    if(s.algorithm != VTP)
+      throw Geodesic_error("approximation works with the VTP algorithm only");
+  }
+  if constexpr(!is_default_parameter<NamedParameters, internal_np::stop_vertices_t>::value) {
+    if(s.algorithm != VTP)
+      throw Geodesic_error("stop_vertices works with the VTP algorithm only");
+  }
+
+  const long threads = static_cast<long>(choose_parameter(get_parameter(np, internal_np::number_of_threads), 0));
+  if(threads < 0)
+    throw Geodesic_error("number of threads must be non-negative, got " + std::to_string(threads));
+  s.number_of_threads = int(threads);
+
+  const auto batch = choose_parameter(get_parameter(np, internal_np::batch_size),
+                                      s.algorithm == VTP ? default_batch_size : default_window_batch_size);
+  if(!(batch > 0))
+    throw Geodesic_error("batch size must be positive, got " + std::to_string(batch));
+  s.batch_size = static_cast<std::size_t>(batch);
+
+  s.statistics = choose_parameter(get_parameter(np, internal_np::statistics), s.statistics);
+  return s;
+}
+
+template <class T, class = void>
+struct is_range : std::false_type {};
+template <class T>
+struct is_range<T, std::void_t<decltype(std::begin(std::declval<const T&>()))>> : std::true_type {};
+
+/// A triangle mesh of the caller as the solvers see it: the `Mesh_cache` (checked), and the
+/// way between the caller's descriptors and the cache's indices. The cache is on the heap, so
+/// that solvers referring to it survive a move of this object.
+template <class TriangleMesh, class VertexPointMap>
+class Mesh_setup
+{
+public:
+  typedef boost::graph_traits<TriangleMesh> Graph_traits;
+  typedef typename Graph_traits::vertex_descriptor vertex_descriptor;
+  typedef typename Graph_traits::halfedge_descriptor halfedge_descriptor;
+  typedef typename Graph_traits::face_descriptor face_descriptor;
+
+  /// Reads `vertex_point_map`, `vertex_index_map` and `face_index_map` from `np` and builds
+  /// the cache; throws `Geodesic_error` when the mesh is not one the solvers take.
+  template <class NamedParameters>
+  Mesh_setup(const TriangleMesh& tm, const NamedParameters& np)
+    : m_tm(&tm)
+    , m_vpm(CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
+                                               get_const_property_map(CGAL::vertex_point, tm)))
+    , m_cache(std::make_unique<Mesh_cache>())
+  {
+    const auto start = std::chrono::steady_clock::now();
+    const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
+    const auto fim = CGAL::get_initialized_face_index_map(tm, np);
+    build_mesh_cache(tm, m_vpm, vim, fim, *m_cache);
+    m_vertex_of_index.resize(m_cache->number_of_vertices);
+    m_face_of_index.resize(m_cache->number_of_faces);
+    for(vertex_descriptor v : vertices(tm))
+      m_vertex_of_index[std::size_t(get(vim, v))] = v;
+    for(face_descriptor f : faces(tm))
+      m_face_of_index[std::size_t(get(fim, f))] = f;
+    m_vertex_index = [vim](vertex_descriptor v) { return int(get(vim, v)); };
+    m_face_index = [fim](face_descriptor f) { return int(get(fim, f)); };
+    m_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+
+  const TriangleMesh& mesh() const { return *m_tm; }
+  const Mesh_cache& cache() const { return *m_cache; }
+  const VertexPointMap& vertex_point_map() const { return m_vpm; }
+  /// Seconds taken to build the cache and check the mesh.
+  double seconds() const { return m_seconds; }
+
+  int index(vertex_descriptor v) const { return m_vertex_index(v); }
+  int index(face_descriptor f) const { return m_face_index(f); }
+  // (named *_of so that they hide none of the graph's free functions, found by ADL)
+  vertex_descriptor vertex_of(int i) const { return m_vertex_of_index[std::size_t(i)]; }
+  face_descriptor face_of(int i) const { return m_face_of_index[std::size_t(i)]; }
+  /// The descriptor of cache half-edge 3f+k: the k-th after `halfedge(f)` (the cache's corner order).
+  halfedge_descriptor halfedge_of(int h) const
+  {
+    halfedge_descriptor d = halfedge(face_of(h / 3), *m_tm);
+    for(int k = 0; k < h % 3; ++k)
+      d = next(d, *m_tm);
+    return d;
+  }
+
+  /// A source given as a vertex.
+  Source_point source_point(vertex_descriptor v) const
+  {
+    Source_point s;
+    s.vertex = index(v);
+    return s;
+  }
+  /// A source given as a face location: a face and barycentric coordinates in the order of the
+  /// face's vertices, starting at `source(halfedge(f))` (CGAL's Face_location convention).
+  template <class FT>
+  Source_point source_point(const std::pair<face_descriptor, std::array<FT, 3>>& location) const
+  {
+    Source_point s;
+    s.face = index(location.first);
+    for(int k = 0; k < 3; ++k)
+      s.barycentric[k] = CGAL::to_double(location.second[k]);
+    return s;
+  }
+  /// One source, or a range of them.
+  template <class Sources>
+  std::vector<Source_point> source_points(const Sources& sources) const
+  {
+    std::vector<Source_point> points;
+    if constexpr(is_range<Sources>::value) {
+      for(const auto& s : sources)
+        points.push_back(source_point(s));
+    } else {
+      points.push_back(source_point(sources));
+    }
+    return points;
+  }
+
+  /// Writes `values[i]` to the vertex of index i.
+  template <class VertexValueMap, class T>
+  void write_vertex_values(VertexValueMap map, const std::vector<T>& values) const
+  {
+    for(std::size_t i = 0; i < values.size(); ++i)
+      put(map, m_vertex_of_index[i], values[i]);
+  }
+
+private:
+  const TriangleMesh* m_tm; // a pointer, so that the object can be moved
+  VertexPointMap m_vpm;
+  std::unique_ptr<Mesh_cache> m_cache;
+  std::vector<vertex_descriptor> m_vertex_of_index;
+  std::vector<face_descriptor> m_face_of_index;
+  std::function<int(vertex_descriptor)> m_vertex_index;
+  std::function<int(face_descriptor)> m_face_index;
+  double m_seconds = 0;
+};
+
+/// The vertex point map type of `TriangleMesh` with the named parameters `NamedParameters`.
+template <class TriangleMesh, class NamedParameters>
+using Vertex_point_map_of = typename CGAL::GetVertexPointMap<TriangleMesh, NamedParameters>::const_type;
+
+/// Runs a solver, in a task arena of `threads` threads (0: TBB's choice) when parallel: the
+/// arena bounds the threads of this call only, never a process-wide setting.
+template <bool parallel, class Solver>
+void run_solver(Solver& solver, int threads)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  if constexpr(parallel) {
+    tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
+    // libtbb is not instrumented: state the hand-over into the arena and back
+    sanitizer_release(&solver);
+    arena.execute([&] {
+      sanitizer_acquire(&solver);
+      solver.run();
+      sanitizer_release(&solver);
+    });
+    sanitizer_acquire(&solver);
+    return;
+  }
+#endif
+  (void)threads;
+  solver.run();
+}
+
+/// Gives the caller what a solver did, when it asked with `statistics`.
+inline void report_statistics(const Solver_settings& settings, Geodesic_statistics statistics, double seconds_setup)
+{
+  statistics.seconds_setup = seconds_setup;
+  if(settings.statistics)
+    *settings.statistics = statistics;
+}
+
+} // namespace internal
+} // namespace Geodesics_3
+} // namespace CGAL_ext
+
+#endif // CGAL_EXT_GEODESICS_3_INTERNAL_GEODESIC_SETUP_H

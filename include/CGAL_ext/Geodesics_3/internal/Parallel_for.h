@@ -1,0 +1,82 @@
+// Copyright (c) 2026 The CGAL_ext geodesics developers.
+#ifndef CGAL_EXT_GEODESICS_3_INTERNAL_PARALLEL_FOR_H
+#define CGAL_EXT_GEODESICS_3_INTERNAL_PARALLEL_FOR_H
+
+// The parallel loops of the solvers, on oneTBB as oneTBB intends: a `tbb::parallel_for` in the
+// caller's task arena (which bounds the threads), inline when there is one thread.
+
+#include <CGAL_ext/Geodesics_3/internal/Thread_sanitizer.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/partitioner.h>
+#include <tbb/task_arena.h>
+#endif
+
+#include <algorithm>
+#include <cstddef>
+
+namespace CGAL_ext {
+namespace Geodesics_3 {
+namespace internal {
+
+/// The calling thread's index in the task arena it runs in: its slot in per-thread storage
+/// (0 outside an arena, or without TBB).
+inline std::size_t this_thread_slot()
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  return std::size_t(std::max(0, tbb::this_task_arena::current_thread_index()));
+#else
+  return 0;
+#endif
+}
+
+/// How many threads the caller's task arena has (1 without TBB): the slots per-thread storage needs.
+inline std::size_t arena_concurrency()
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  return std::size_t(std::max(1, tbb::this_task_arena::max_concurrency()));
+#else
+  return 1;
+#endif
+}
+
+/// Calls `f(i, slot)` for every i in [0, n), `slot` being the calling thread's index in the
+/// arena. When `parallel`, the arena has more than one thread and n is more than one chunk, the
+/// indices go in chunks of `grain` (a `simple_partitioner`: chunks of exactly that size at most)
+/// to the arena's threads; otherwise they run here, in order. Callers write per index, or per
+/// slot with ranges kept per index, so which thread runs an index never changes a result.
+template <class Function>
+void for_each_index(bool parallel, std::size_t n, std::size_t grain, const Function& f)
+{
+  grain = std::max<std::size_t>(grain, 1);
+#ifdef CGAL_LINKED_WITH_TBB
+  if(parallel && n > grain && tbb::this_task_arena::max_concurrency() > 1) {
+    // libtbb is not instrumented: state the hand-over of the loop to its tasks and back.
+    sanitizer_release(const_cast<Function*>(&f));
+    tbb::parallel_for(
+      tbb::blocked_range<std::size_t>(0, n, grain),
+      [&f](const tbb::blocked_range<std::size_t>& r) {
+        sanitizer_acquire(const_cast<Function*>(&f));
+        const std::size_t slot = this_thread_slot();
+        for(std::size_t i = r.begin(); i != r.end(); ++i)
+          f(i, slot);
+        sanitizer_release(const_cast<Function*>(&f));
+      },
+      tbb::simple_partitioner());
+    sanitizer_acquire(const_cast<Function*>(&f));
+    return;
+  }
+#endif
+  (void)parallel;
+  const std::size_t slot = this_thread_slot();
+  for(std::size_t i = 0; i < n; ++i)
+    f(i, slot);
+}
+
+} // namespace internal
+} // namespace Geodesics_3
+} // namespace CGAL_ext
+
+#endif // CGAL_EXT_GEODESICS_3_INTERNAL_PARALLEL_FOR_H

@@ -1,0 +1,116 @@
+// Copyright (c) 2026 The CGAL_ext geodesics developers.
+#ifndef CGAL_EXT_GEODESICS_3_INTERNAL_SOLVER_BASE_H
+#define CGAL_EXT_GEODESICS_3_INTERNAL_SOLVER_BASE_H
+
+#include <CGAL_ext/Geodesics_3/Geodesic_error.h>
+#include <CGAL_ext/Geodesics_3/Geodesic_statistics.h>
+#include <CGAL_ext/Geodesics_3/Tolerances.h>
+#include <CGAL_ext/Geodesics_3/internal/Geodesic_setup.h>
+#include <CGAL_ext/Geodesics_3/internal/Mesh_cache.h>
+#include <CGAL_ext/Geodesics_3/internal/Sources.h>
+#include <CGAL_ext/Geodesics_3/internal/Window.h>
+
+#include <algorithm>
+#include <chrono>
+#include <limits>
+#include <vector>
+
+namespace CGAL_ext {
+namespace Geodesics_3 {
+namespace internal {
+
+/// What the VTP and MMP solvers share: the mesh, the sources, the vertex distances, the
+/// settings, the trimming of a window by its edge's end vertices, and the statistics.
+class Solver_base
+{
+public:
+  static double infinity() { return std::numeric_limits<double>::infinity(); }
+
+  /// Adds a source (checked; a face point on a corner becomes that vertex); its index is the
+  /// number of sources added before it.
+  void add_source(const Source_point& s) { m_sources.push_back(normalized_source(m_mesh, s)); }
+
+  const Mesh_cache& mesh() const { return m_mesh; }
+  const std::vector<Source_point>& sources() const { return m_sources; }
+  /// The distance of every vertex (+infinity where no source reaches).
+  const std::vector<double>& distances() const { return m_distance; }
+  double max_distance() const { return m_max_distance; }
+  const Geodesic_statistics& statistics() const { return m_statistics; }
+
+protected:
+  typedef std::chrono::steady_clock Clock;
+
+  /// `settings` were checked by `read_solver_settings()`; `parallel` runs the loops on the
+  /// threads of the caller's task arena.
+  Solver_base(const Mesh_cache& mesh, const Solver_settings& settings, bool parallel)
+    : m_mesh(mesh)
+    , m_distance(mesh.number_of_vertices, infinity())
+    , m_emitted(mesh.number_of_vertices, infinity())
+    , m_max_distance(settings.max_distance)
+    , m_window_limit(settings.max_distance)
+    , m_min_window_length(min_window_length_ratio * mesh.mean_edge_length)
+    , m_batch_size(settings.batch_size)
+    , m_parallel(parallel)
+  {
+#ifndef CGAL_LINKED_WITH_TBB
+    if(parallel)
+      throw Geodesic_error("parallel propagation needs TBB (CGAL_LINKED_WITH_TBB is not defined)");
+#endif
+  }
+
+  Solver_base(const Solver_base&) = delete;
+  Solver_base& operator=(const Solver_base&) = delete;
+
+  static double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+  void check_sources() const
+  {
+    if(m_sources.empty())
+      throw Geodesic_error("no source was given");
+  }
+
+  /// Trims a window (in the frame of h) by the distances `d_from` and `d_to` of the source and
+  /// target of h, and drops it when its smallest distance is beyond the window limit: false if
+  /// nothing is left.
+  bool keep_window(Window_geometry& w, int h, double d_from, double d_to) const
+  {
+    double key;
+    return trim_by_edge_vertices(w, m_mesh.frame[h].length, d_from, d_to, key) && key <= m_window_limit;
+  }
+
+  template <class Pool>
+  void note_live_windows(const Pool& pool)
+  {
+    m_peak_windows = std::max(m_peak_windows, pool.live());
+  }
+
+  /// Fills the statistics every solver reports at the end of its run.
+  template <class Pool>
+  void finish_statistics(const Pool& pool, Clock::time_point start)
+  {
+    note_live_windows(pool);
+    m_statistics.vertices = m_mesh.number_of_vertices;
+    m_statistics.faces = m_mesh.number_of_faces;
+    m_statistics.peak_windows = m_peak_windows;
+    m_statistics.peak_window_bytes = pool.bytes();
+    m_statistics.seconds_solve = seconds_since(start);
+  }
+
+  const Mesh_cache& m_mesh;
+  std::vector<Source_point> m_sources;
+  std::vector<double> m_distance;
+  std::vector<double> m_emitted; // sigma of the last windows a pseudo-source emitted
+  const double m_max_distance;
+  double m_window_limit;         // windows whose smallest distance is beyond it are dropped
+  const double m_min_window_length;
+  const std::size_t m_batch_size;
+  const bool m_parallel;
+  std::size_t m_peak_windows = 0;
+  Geodesic_statistics m_statistics;
+};
+
+} // namespace internal
+} // namespace Geodesics_3
+} // namespace CGAL_ext
+
+#endif // CGAL_EXT_GEODESICS_3_INTERNAL_SOLVER_BASE_H
