@@ -723,6 +723,13 @@ def section_mesh(runs, spec, warnings):
         return None
 
 
+def section_row(spec, m, runs):
+    """The label of a mesh and a new row of a table section for it, with VTP's run (every
+    section compares with VTP)."""
+    row = {"mesh": m["label"], "spec": spec, "vertices": m["vertices"], "vtp": runs.run(spec, "vtp")}
+    return m["label"], row
+
+
 def usable_meshes(specs, runs, warnings):
     """(spec, mesh) for each mesh of `specs` that could be made and is not over the size limit."""
     for spec in specs:
@@ -791,9 +798,7 @@ def table41_section(specs, runs, args, warnings):
     lambdas = args.table41_lambdas
     rows = []
     for spec, m in usable_meshes(specs, runs, warnings):
-        label = m["label"]
-        row = {"mesh": label, "spec": spec, "vertices": m["vertices"]}
-        row["vtp"] = runs.run(spec, "vtp")
+        label, row = section_row(spec, m, runs)
         row["pvtp"] = {t: runs.run(spec, "pvtp", threads=t) for t in threads}
         row["avtp"] = {l: runs.run(spec, "avtp", lam=l) for l in lambdas}
         row["pavtp"] = {l: runs.run(spec, "pavtp", threads=t_max, lam=l) for l in lambdas}
@@ -1102,9 +1107,7 @@ def table31_section(specs, runs, args, warnings):
     threads = args.table31_threads
     rows = []
     for spec, m in usable_meshes(specs, runs, warnings):
-        label = m["label"]
-        row = {"mesh": label, "spec": spec, "vertices": m["vertices"]}
-        row["vtp"] = runs.run(spec, "vtp")
+        label, row = section_row(spec, m, runs)
         row["mmp"] = runs.run(spec, "mmp")
         row["fwp_mmp"] = runs.run(spec, "fwp_mmp")
         row["pmmp"] = {t: runs.run(spec, "pmmp", threads=t) for t in threads}
@@ -1221,9 +1224,7 @@ def paths_section(specs, runs, args, warnings):
     """CGAL's Surface_mesh_shortest_path against FWP-MMP: build, memory, path queries."""
     rows = []
     for spec, m in usable_meshes(specs, runs, warnings):
-        label = m["label"]
-        row = {"mesh": label, "spec": spec, "vertices": m["vertices"]}
-        row["vtp"] = runs.run(spec, "vtp")
+        label, row = section_row(spec, m, runs)
         if args.smsp_max_vertices and m["vertices"] > args.smsp_max_vertices:
             row["smsp"] = {"status": "skip", "reason": "> %d vertices" % args.smsp_max_vertices}
             log("%-14s smsp skipped (%d vertices > --smsp-max-vertices %d)"
@@ -1434,10 +1435,16 @@ def main():
 
     with tempfile.TemporaryDirectory(prefix="bench_geodesics_") as tmp:
         runs = Runs(args, warnings, tmp)
-        if "table41" in sections:
-            rows = table41_section(table41_meshes, runs, args, warnings)
-            print(table41_text(rows, args))
-            report["table41"] = rows
+        # The sections that run, print and report the same way: (name, meshes, run, text).
+        plain_sections = [("table41", table41_meshes, table41_section, table41_text),
+                          ("heat_vs_avtp", heat_meshes, heat_section, heat_text_table),
+                          ("table31", table31_meshes, table31_section, table31_text),
+                          ("paths", paths_meshes, paths_section, paths_text)]
+        for name, meshes, run_section, text in plain_sections[:1]:
+            if name in sections:
+                rows = run_section(meshes, runs, args, warnings)
+                print(text(rows, args))
+                report[name] = rows
         if "lambda" in sections:
             rows = lambda_section(lambda_meshes, runs, args, warnings)
             if rows:
@@ -1447,18 +1454,11 @@ def main():
                     plot_lambda_curve(csv_path, png_path, warnings)
             print(lambda_text_table(rows, csv_path, png_path))
             report["lambda_curve"] = lambda_csv_rows(rows)
-        if "heat_vs_avtp" in sections:
-            rows = heat_section(heat_meshes, runs, args, warnings)
-            print(heat_text_table(rows, args))
-            report["heat_vs_avtp"] = rows
-        if "table31" in sections:
-            rows = table31_section(table31_meshes, runs, args, warnings)
-            print(table31_text(rows, args))
-            report["table31"] = rows
-        if "paths" in sections:
-            rows = paths_section(paths_meshes, runs, args, warnings)
-            print(paths_text(rows, args))
-            report["paths"] = rows
+        for name, meshes, run_section, text in plain_sections[1:]:
+            if name in sections:
+                rows = run_section(meshes, runs, args, warnings)
+                print(text(rows, args))
+                report[name] = rows
 
     if warnings:
         print("### Warnings\n")

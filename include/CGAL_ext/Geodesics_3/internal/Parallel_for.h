@@ -21,26 +21,15 @@ namespace CGAL_ext {
 namespace Geodesics_3 {
 namespace internal {
 
-/// The calling thread's index in the task arena it runs in: its slot in per-thread storage
-/// (0 outside an arena, or without TBB).
-inline std::size_t this_thread_slot()
-{
+// The calling thread's index in the task arena it runs in: its slot in per-thread storage (0
+// outside an arena); and how many threads the caller's arena has: the slots storage needs.
 #ifdef CGAL_LINKED_WITH_TBB
-  return std::size_t(std::max(0, tbb::this_task_arena::current_thread_index()));
+inline std::size_t this_thread_slot() { return std::size_t(std::max(0, tbb::this_task_arena::current_thread_index())); }
+inline std::size_t arena_concurrency() { return std::size_t(std::max(1, tbb::this_task_arena::max_concurrency())); }
 #else
-  return 0;
+inline std::size_t this_thread_slot() { return 0; }
+inline std::size_t arena_concurrency() { return 1; }
 #endif
-}
-
-/// How many threads the caller's task arena has (1 without TBB): the slots per-thread storage needs.
-inline std::size_t arena_concurrency()
-{
-#ifdef CGAL_LINKED_WITH_TBB
-  return std::size_t(std::max(1, tbb::this_task_arena::max_concurrency()));
-#else
-  return 1;
-#endif
-}
 
 /// Calls `f(i, slot)` for every i in [0, n), `slot` being the calling thread's index in the
 /// arena. When `parallel`, the arena has more than one thread and n is more than one chunk, the
