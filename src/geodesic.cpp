@@ -23,10 +23,10 @@
 #include "tool_stats.h"
 #include "tool_text.h"
 
+#include <CGAL_ext/Geodesics_3/polyline_length.h>
 
 #include <CLI/CLI.hpp>
 
-#include <cmath>
 #include <exception>
 #include <iomanip>
 #include <iostream>
@@ -51,14 +51,6 @@ void check_ranges(const std::vector<Surface_point>& sources, const Mesh& mesh)
 {
   for(const Surface_point& s : sources)
     check_surface_point_range(s, mesh.number_of_vertices(), mesh.number_of_faces());
-}
-
-double polyline_length(const std::vector<Point>& points)
-{
-  double length = 0;
-  for(std::size_t i = 1; i < points.size(); ++i)
-    length += std::sqrt(CGAL::squared_distance(points[i - 1], points[i]));
-  return length;
 }
 
 int run_distances(const Distances_options& options)
@@ -127,7 +119,7 @@ int run_path(const Path_options& options)
       << "seconds_query=" << path.seconds_query << "\n";
     write_solver_stats(s, choice, path.stats);
     s << "peak_rss_mb=" << peak_rss_mb() << "\n"
-      << "length=" << number_text(polyline_length(path.points)) << "\n"
+      << "length=" << number_text(CGAL_ext::polyline_length(path.points)) << "\n"
       << "distance=" << number_text(path.distance) << "\n"
       << "points=" << path.points.size() << "\n"
       << "nearest_source=" << path.nearest_source << "\n";

@@ -2,6 +2,7 @@
 // Tests of the command-line tool `geodesic`, run as a separate process; each test works in its
 // own folder under the build directory (kept when the test fails, for inspection).
 
+#include <CGAL_ext/Geodesics_3/polyline_length.h>
 #include <CGAL_ext/geodesic_distances.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -31,6 +32,7 @@
 namespace {
 
 namespace fs = std::filesystem;
+using CGAL_ext::polyline_length;
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef K::Point_3 Point;
 typedef CGAL::Surface_mesh<Point> Mesh;
@@ -102,14 +104,6 @@ std::vector<Point> parse_points(const std::string& text)
     points.emplace_back(x, y, z);
   }
   return points;
-}
-
-double polyline_length(const std::vector<Point>& points)
-{
-  double length = 0;
-  for(std::size_t i = 1; i < points.size(); ++i)
-    length += std::sqrt(CGAL::squared_distance(points[i - 1], points[i]));
-  return length;
 }
 
 double distance_between(const Point& a, const Point& b) { return std::sqrt(CGAL::squared_distance(a, b)); }
