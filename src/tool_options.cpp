@@ -5,6 +5,8 @@
 #include "tool_error.h"
 #include "tool_text.h"
 
+#include <CGAL_ext/Geodesics_3/Tolerances.h>
+
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
@@ -209,7 +211,8 @@ Surface_point parse_surface_point(const std::string& text, const char* role)
   if(b[0] < 0 || b[1] < 0 || b[2] < 0)
     throw bad("barycentric coordinates must be non-negative");
   const double sum = b[0] + b[1] + b[2];
-  if(std::abs(sum - 1.) > 1e-9) { // the library's tolerance
+  // the library would refuse the point otherwise; refusing it here names it as written
+  if(std::abs(sum - 1.) > CGAL_ext::Geodesics_3::barycentric_sum_tolerance) {
     std::ostringstream msg;
     msg.precision(17);
     msg << "barycentric coordinates sum to " << sum << ", not 1";
