@@ -1,16 +1,20 @@
 // Copyright (c) 2026 The CGAL_ext geodesics developers.
-// Tests of the command-line tool `geodesic`: the checking of its command line called directly,
-// and the tool run as a separate process. Each test of the tool works in its own folder under the
-// build directory (kept when the test fails, for inspection).
+// Tests of the command-line tool `geodesic`: its parts called directly (the checking of the
+// command line, the writers), and the tool run as a separate process. Each test of the tool, or
+// of its writers, works in its own folder under the build directory (kept when the test fails,
+// for inspection).
 
 #include "tool_error.h"
 #include "tool_mesh.h"
 #include "tool_options.h"
+#include "tool_output.h"
 #include "tool_text.h"
 
 #include <CGAL_ext/Geodesics_3/Tolerances.h>
 #include <CGAL_ext/Geodesics_3/polyline_length.h>
 #include <CGAL_ext/geodesic_distances.h>
+
+#include <CGAL/IO/PLY.h>
 
 #include <CLI/CLI.hpp>
 
@@ -30,6 +34,7 @@
 #include <optional>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -112,6 +117,64 @@ std::vector<Point> parse_points(const std::string& text)
     points.emplace_back(x, y, z);
   }
   return points;
+}
+
+/// Checks a polyline in the tool's OBJ: the points as `v` lines, then one `l` line through them in
+/// order (none for a single point), and comments.
+void expect_obj_polyline(const std::string& text, const std::vector<Point>& points)
+{
+  std::vector<Point> obj;
+  std::vector<std::string> polylines;
+  for(const std::string& line : lines_of(text)) {
+    std::istringstream in(line);
+    std::string tag;
+    in >> tag;
+    if(tag == "v") {
+      double x, y, z;
+      ASSERT_TRUE(in >> x >> y >> z) << line;
+      obj.emplace_back(x, y, z);
+    } else if(tag == "l") {
+      polylines.push_back(line);
+    } else {
+      EXPECT_EQ(tag, "#") << line;
+    }
+  }
+  EXPECT_EQ(obj, points);
+  std::string expected = "l";
+  for(std::size_t i = 1; i <= points.size(); ++i)
+    expected += " " + std::to_string(i);
+  EXPECT_EQ(polylines, points.size() >= 2 ? std::vector<std::string>{expected} : std::vector<std::string>{});
+}
+
+/// Checks a polyline in the tool's PLY: ASCII, a vertex element with the points and an edge
+/// element between consecutive points.
+void expect_ply_polyline(const std::string& text, const std::vector<Point>& points)
+{
+  const std::size_t n = points.size();
+  ASSERT_GE(n, 1u);
+  const std::vector<std::string> lines = lines_of(text);
+  const auto end = std::find(lines.begin(), lines.end(), "end_header");
+  ASSERT_NE(end, lines.end());
+  const std::vector<std::string> header(lines.begin(), end);
+  ASSERT_GE(header.size(), 2u);
+  EXPECT_EQ(header[0], "ply");
+  EXPECT_EQ(header[1], "format ascii 1.0");
+  const auto has = [&](const std::string& line) {
+    return std::find(header.begin(), header.end(), line) != header.end();
+  };
+  EXPECT_TRUE(has("element vertex " + std::to_string(n)));
+  EXPECT_TRUE(has("element edge " + std::to_string(n - 1)));
+  for(const char* property : {"property double x", "property double y", "property double z",
+                              "property int vertex1", "property int vertex2"})
+    EXPECT_TRUE(has(property)) << property;
+  const std::vector<std::string> body(end + 1, lines.end());
+  ASSERT_EQ(body.size(), n + n - 1);
+  std::string points_text;
+  for(std::size_t i = 0; i < n; ++i)
+    points_text += body[i] + "\n";
+  EXPECT_EQ(parse_points(points_text), points);
+  for(std::size_t i = 0; i + 1 < n; ++i)
+    EXPECT_EQ(body[n + i], std::to_string(i) + " " + std::to_string(i + 1));
 }
 
 double distance_between(const Point& a, const Point& b) { return std::sqrt(CGAL::squared_distance(a, b)); }
@@ -611,6 +674,115 @@ TEST(Tool_command_line, bad_command_lines_name_the_argument)
 }
 
 // ---------------------------------------------------------------------------------------------
+// The writers, called directly
+
+/// A tetrahedron built the tool's way, with `d` in its vertex property "v:distance".
+class Tool_output : public Tool
+{
+protected:
+  Tool_output()
+  {
+    Soup soup;
+    soup.points = {Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(0, 0, 1)};
+    soup.polygons = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}};
+    tool::check_soup(soup);
+    mesh = soup_to_mesh(soup);
+    distance = mesh.add_property_map<Vertex_index, double>("v:distance").first;
+    for(Vertex_index v : mesh.vertices())
+      distance[v] = d[v];
+  }
+
+  const std::vector<double> d = {0., 0.1, 1. / 3, infinity}; // vertex 3 unreached
+  Mesh mesh;
+  tool::Distance_map distance;
+};
+
+TEST_F(Tool_output, distances_txt_reads_back_exactly)
+{
+  std::ostringstream os;
+  ASSERT_TRUE(tool::write_distances_txt(os, mesh, distance));
+  EXPECT_EQ(os.str(), "0\n0.10000000000000001\n0.33333333333333331\ninf\n");
+  EXPECT_EQ(parse_distances(os.str()), d);
+}
+
+TEST_F(Tool_output, distances_ply_reads_back_with_cgal)
+{
+  tool::write_output(path("d.ply").string(),
+                     [&](std::ostream& os) { return tool::write_distances_ply(os, mesh, distance); });
+  EXPECT_EQ(files(), std::set<std::string>{"d.ply"});
+  Mesh back;
+  std::ifstream in(path("d.ply"), std::ios::binary);
+  ASSERT_TRUE(CGAL::IO::read_PLY(in, back));
+  ASSERT_EQ(back.number_of_vertices(), 4u);
+  ASSERT_EQ(back.number_of_faces(), 4u);
+  const auto [back_distance, has_distance] = back.property_map<Vertex_index, double>("v:distance");
+  ASSERT_TRUE(has_distance);
+  const auto [color, has_color] = back.property_map<Vertex_index, CGAL::IO::Color>("v:color");
+  ASSERT_TRUE(has_color);
+  for(Vertex_index v : back.vertices()) {
+    EXPECT_EQ(back.point(v), mesh.point(v)) << "vertex " << v;
+    EXPECT_EQ(back_distance[v], d[v]) << "vertex " << v;
+    EXPECT_EQ(color[v], tool::distance_color(d[v], 1. / 3)) << "vertex " << v;
+  }
+  // blue at the source, red at the farthest reached vertex, grey where unreached
+  EXPECT_EQ(color[Vertex_index(0)], CGAL::IO::Color(0, 0, 255));
+  EXPECT_EQ(color[Vertex_index(2)], CGAL::IO::Color(255, 0, 0));
+  EXPECT_EQ(color[Vertex_index(3)], CGAL::IO::Color(128, 128, 128));
+  EXPECT_EQ(tool::farthest_finite(mesh, distance), 1. / 3);
+}
+
+TEST_F(Tool_output, paths_read_back_exactly)
+{
+  const std::vector<Point> points = {Point(0.1, 1. / 3, -2.5e-300), Point(1e300, 2, 3), Point(-1, 0, 0.7)};
+  for(const std::vector<Point>& polyline : {points, std::vector<Point>{points[1]}}) {
+    SCOPED_TRACE(std::to_string(polyline.size()) + " points");
+    std::ostringstream txt, obj, ply;
+    ASSERT_TRUE(tool::write_path_txt(txt, polyline));
+    EXPECT_EQ(parse_points(txt.str()), polyline);
+    ASSERT_TRUE(tool::write_path_obj(obj, polyline));
+    expect_obj_polyline(obj.str(), polyline);
+    ASSERT_TRUE(tool::write_path_ply(ply, polyline));
+    expect_ply_polyline(ply.str(), polyline);
+  }
+}
+
+// Writing through a temporary file: an error leaves no file behind, and an existing file as it was.
+TEST_F(Tool_output, a_failed_write_leaves_no_partial_file)
+{
+  const auto complete = [](std::ostream& os) { return bool(os << "new content\n"); };
+  const auto fails_half_way = [](std::ostream& os) {
+    os << "partial";
+    os.setstate(std::ios::badbit);
+    return bool(os);
+  };
+  const auto throws_half_way = [](std::ostream& os) -> bool {
+    os << "partial";
+    throw std::runtime_error("stop");
+  };
+  const std::string file = path("d.txt").string();
+  write("d.txt", "previous content\n");
+  tool::write_output(file, complete);
+  EXPECT_EQ(read_text(file), "new content\n");
+  EXPECT_EQ(files(), std::set<std::string>{"d.txt"});
+
+  EXPECT_EQ(tool_error_of([&] { tool::write_output(file, fails_half_way); }), "cannot write '" + file + "'");
+  EXPECT_THROW(tool::write_output(file, throws_half_way), std::runtime_error);
+  EXPECT_EQ(read_text(file), "new content\n");
+  const std::string other = path("e.txt").string();
+  EXPECT_EQ(tool_error_of([&] { tool::write_output(other, fails_half_way); }), "cannot write '" + other + "'");
+  EXPECT_THROW(tool::write_output(other, throws_half_way), std::runtime_error);
+  EXPECT_EQ(files(), std::set<std::string>{"d.txt"});
+
+  // a folder in the way, a missing folder
+  fs::create_directory(path("folder.txt"));
+  const std::string folder = path("folder.txt").string(), missing = path("missing/m.txt").string();
+  EXPECT_EQ(tool_error_of([&] { tool::write_output(folder, complete); }), "cannot write '" + folder + "'");
+  EXPECT_EQ(tool_error_of([&] { tool::write_output(missing, complete); }), "cannot write '" + missing + "'");
+  EXPECT_EQ(files(), (std::set<std::string>{"d.txt", "folder.txt"}));
+  EXPECT_TRUE(fs::is_empty(path("folder.txt")));
+}
+
+// ---------------------------------------------------------------------------------------------
 // Results
 
 TEST_F(Tool, txt_output_on_the_elephant)
@@ -973,57 +1145,14 @@ TEST_F(Tool, path_obj_and_ply_hold_the_txt_points)
   const std::string args = "path '" + elephant + "' --source 0 --target f:40:0.6:0.3:0.1";
   const std::vector<Point> txt = path_points(args);
   ASSERT_GE(txt.size(), 3u);
-  const std::size_t n = txt.size();
 
   // OBJ: the points as `v` lines, then one `l` line through them in order
   ASSERT_EQ(run(args + " --output p.obj").exit_code, 0);
-  std::vector<Point> obj;
-  std::vector<std::string> polylines;
-  for(const std::string& line : lines_of(read_text(path("p.obj")))) {
-    std::istringstream in(line);
-    std::string tag;
-    in >> tag;
-    if(tag == "v") {
-      double x, y, z;
-      ASSERT_TRUE(in >> x >> y >> z) << line;
-      obj.emplace_back(x, y, z);
-    } else if(tag == "l") {
-      polylines.push_back(line);
-    } else {
-      EXPECT_EQ(tag, "#") << line;
-    }
-  }
-  EXPECT_EQ(obj, txt);
-  std::string expected = "l";
-  for(std::size_t i = 1; i <= n; ++i)
-    expected += " " + std::to_string(i);
-  EXPECT_EQ(polylines, std::vector<std::string>{expected});
+  expect_obj_polyline(read_text(path("p.obj")), txt);
 
   // PLY: ASCII, a vertex element and an edge element between consecutive points
   ASSERT_EQ(run(args + " --output p.ply").exit_code, 0);
-  const std::vector<std::string> lines = lines_of(read_text(path("p.ply")));
-  const auto end = std::find(lines.begin(), lines.end(), "end_header");
-  ASSERT_NE(end, lines.end());
-  const std::vector<std::string> header(lines.begin(), end);
-  ASSERT_GE(header.size(), 2u);
-  EXPECT_EQ(header[0], "ply");
-  EXPECT_EQ(header[1], "format ascii 1.0");
-  const auto has = [&](const std::string& line) {
-    return std::find(header.begin(), header.end(), line) != header.end();
-  };
-  EXPECT_TRUE(has("element vertex " + std::to_string(n)));
-  EXPECT_TRUE(has("element edge " + std::to_string(n - 1)));
-  for(const char* property : {"property double x", "property double y", "property double z",
-                              "property int vertex1", "property int vertex2"})
-    EXPECT_TRUE(has(property)) << property;
-  const std::vector<std::string> body(end + 1, lines.end());
-  ASSERT_EQ(body.size(), n + n - 1);
-  std::string points_text;
-  for(std::size_t i = 0; i < n; ++i)
-    points_text += body[i] + "\n";
-  EXPECT_EQ(parse_points(points_text), txt);
-  for(std::size_t i = 0; i + 1 < n; ++i)
-    EXPECT_EQ(body[n + i], std::to_string(i) + " " + std::to_string(i + 1));
+  expect_ply_polyline(read_text(path("p.ply")), txt);
 }
 
 TEST_F(Tool, path_from_a_face_point_to_a_vertex)
