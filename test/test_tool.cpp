@@ -105,6 +105,19 @@ std::map<std::string, std::string> parse_key_values(const std::string& text)
   return kv;
 }
 
+/// Expects each of `keys` once in the --stats output `stats` parsed as `kv`, with a finite,
+/// non-negative number.
+void expect_non_negative_numbers(const std::map<std::string, std::string>& kv, const std::vector<std::string>& keys,
+                                 const std::string& stats)
+{
+  for(const std::string& key : keys) {
+    ASSERT_EQ(kv.count(key), 1u) << "missing " << key << " in:\n" << stats;
+    char* end = nullptr;
+    const double value = std::strtod(kv.at(key).c_str(), &end);
+    EXPECT_TRUE(*end == '\0' && std::isfinite(value) && value >= 0) << key << "=" << kv.at(key);
+  }
+}
+
 /// Parses a polyline of the tool: one `x y z` line per point, nothing else.
 std::vector<Point> parse_points(const std::string& text)
 {
@@ -117,6 +130,31 @@ std::vector<Point> parse_points(const std::string& text)
     points.emplace_back(x, y, z);
   }
   return points;
+}
+
+/// A distances PLY of the tool, read back with CGAL: the mesh and, in vertex order, its points,
+/// distances and colours.
+struct Distances_ply
+{
+  Mesh mesh;
+  std::vector<Point> points;
+  std::vector<double> distances;
+  std::vector<CGAL::IO::Color> colors;
+};
+
+void read_distances_ply(const fs::path& file, Distances_ply& ply)
+{
+  std::ifstream in(file, std::ios::binary);
+  ASSERT_TRUE(CGAL::IO::read_PLY(in, ply.mesh));
+  const auto [distance, has_distance] = ply.mesh.property_map<Vertex_index, double>("v:distance");
+  ASSERT_TRUE(has_distance) << "no vertex property 'distance' in the PLY file";
+  const auto [color, has_color] = ply.mesh.property_map<Vertex_index, CGAL::IO::Color>("v:color");
+  ASSERT_TRUE(has_color);
+  for(Vertex_index v : ply.mesh.vertices()) {
+    ply.points.push_back(ply.mesh.point(v));
+    ply.distances.push_back(distance[v]);
+    ply.colors.push_back(color[v]);
+  }
 }
 
 /// Checks a polyline in the tool's OBJ: the points as `v` lines, then one `l` line through them in
@@ -682,7 +720,6 @@ class Tool_output : public Tool
 protected:
   Tool_output()
   {
-    Soup soup;
     soup.points = {Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(0, 0, 1)};
     soup.polygons = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}};
     tool::check_soup(soup);
@@ -693,6 +730,7 @@ protected:
   }
 
   const std::vector<double> d = {0., 0.1, 1. / 3, infinity}; // vertex 3 unreached
+  Soup soup;
   Mesh mesh;
   tool::Distance_map distance;
 };
@@ -710,24 +748,18 @@ TEST_F(Tool_output, distances_ply_reads_back_with_cgal)
   tool::write_output(path("d.ply").string(),
                      [&](std::ostream& os) { return tool::write_distances_ply(os, mesh, distance); });
   EXPECT_EQ(files(), std::set<std::string>{"d.ply"});
-  Mesh back;
-  std::ifstream in(path("d.ply"), std::ios::binary);
-  ASSERT_TRUE(CGAL::IO::read_PLY(in, back));
-  ASSERT_EQ(back.number_of_vertices(), 4u);
-  ASSERT_EQ(back.number_of_faces(), 4u);
-  const auto [back_distance, has_distance] = back.property_map<Vertex_index, double>("v:distance");
-  ASSERT_TRUE(has_distance);
-  const auto [color, has_color] = back.property_map<Vertex_index, CGAL::IO::Color>("v:color");
-  ASSERT_TRUE(has_color);
-  for(Vertex_index v : back.vertices()) {
-    EXPECT_EQ(back.point(v), mesh.point(v)) << "vertex " << v;
-    EXPECT_EQ(back_distance[v], d[v]) << "vertex " << v;
-    EXPECT_EQ(color[v], tool::distance_color(d[v], 1. / 3)) << "vertex " << v;
-  }
+  Distances_ply ply;
+  ASSERT_NO_FATAL_FAILURE(read_distances_ply(path("d.ply"), ply));
+  ASSERT_EQ(ply.mesh.number_of_faces(), 4u);
+  EXPECT_EQ(ply.points, soup.points);
+  EXPECT_EQ(ply.distances, d);
+  ASSERT_EQ(ply.colors.size(), d.size());
+  for(std::size_t v = 0; v < d.size(); ++v)
+    EXPECT_EQ(ply.colors[v], tool::distance_color(d[v], 1. / 3)) << "vertex " << v;
   // blue at the source, red at the farthest reached vertex, grey where unreached
-  EXPECT_EQ(color[Vertex_index(0)], CGAL::IO::Color(0, 0, 255));
-  EXPECT_EQ(color[Vertex_index(2)], CGAL::IO::Color(255, 0, 0));
-  EXPECT_EQ(color[Vertex_index(3)], CGAL::IO::Color(128, 128, 128));
+  EXPECT_EQ(ply.colors[0], CGAL::IO::Color(0, 0, 255));
+  EXPECT_EQ(ply.colors[2], CGAL::IO::Color(255, 0, 0));
+  EXPECT_EQ(ply.colors[3], CGAL::IO::Color(128, 128, 128));
   EXPECT_EQ(tool::farthest_finite(mesh, distance), 1. / 3);
 }
 
@@ -809,27 +841,17 @@ TEST_F(Tool, ply_output_holds_the_txt_distances)
 {
   const std::vector<double> d = distances("distances '" + elephant + "' --source 17");
   ASSERT_EQ(run("distances '" + elephant + "' --source 17 --output d.ply").exit_code, 0);
-  Mesh mesh;
-  std::ifstream in(path("d.ply"), std::ios::binary);
-  ASSERT_TRUE(CGAL::IO::read_PLY(in, mesh));
-  ASSERT_EQ(mesh.number_of_vertices(), 2775u);
-  ASSERT_EQ(mesh.number_of_faces(), 5558u);
-  const auto [ply_distance, has_distance] = mesh.property_map<Vertex_index, double>("v:distance");
-  ASSERT_TRUE(has_distance) << "no vertex property 'distance' in the PLY file";
-  std::vector<double> from_ply;
-  for(Vertex_index v : mesh.vertices())
-    from_ply.push_back(ply_distance[v]);
-  expect_same_distances(from_ply, d);
+  Distances_ply ply;
+  ASSERT_NO_FATAL_FAILURE(read_distances_ply(path("d.ply"), ply));
+  ASSERT_EQ(ply.mesh.number_of_vertices(), 2775u);
+  ASSERT_EQ(ply.mesh.number_of_faces(), 5558u);
+  expect_same_distances(ply.distances, d);
 
   // the geometry is the file's, and the ramp goes from blue (near) to red (far)
-  const Soup soup = read_soup(elephant);
-  for(Vertex_index v : mesh.vertices())
-    ASSERT_EQ(mesh.point(v), soup.points[v]) << "vertex " << v;
-  const auto [color, has_color] = mesh.property_map<Vertex_index, CGAL::IO::Color>("v:color");
-  ASSERT_TRUE(has_color);
-  EXPECT_EQ(color[Vertex_index(17)], CGAL::IO::Color(0, 0, 255));
-  const Vertex_index far(static_cast<Mesh::size_type>(std::max_element(d.begin(), d.end()) - d.begin()));
-  EXPECT_EQ(color[far], CGAL::IO::Color(255, 0, 0));
+  EXPECT_EQ(ply.points, read_soup(elephant).points);
+  EXPECT_EQ(ply.colors[17], CGAL::IO::Color(0, 0, 255));
+  const std::size_t far = std::max_element(d.begin(), d.end()) - d.begin();
+  EXPECT_EQ(ply.colors[far], CGAL::IO::Color(255, 0, 0));
 }
 
 // Barycentric coordinates on the command line follow the file's order of the face's vertices,
@@ -956,12 +978,7 @@ TEST_P(Stats, on_stderr)
     keys.push_back("lambda");
   if(is_mmp(c.algorithm))
     keys.insert(keys.end(), mmp_keys.begin(), mmp_keys.end());
-  for(const std::string& key : keys) {
-    ASSERT_EQ(kv.count(key), 1u) << "missing " << key << " in:\n" << r.err;
-    char* end = nullptr;
-    const double value = std::strtod(kv.at(key).c_str(), &end);
-    EXPECT_TRUE(*end == '\0' && std::isfinite(value) && value >= 0) << key << "=" << kv.at(key);
-  }
+  ASSERT_NO_FATAL_FAILURE(expect_non_negative_numbers(kv, keys, r.err));
   ASSERT_EQ(kv.count("algorithm"), 1u) << r.err;
   EXPECT_EQ(kv.at("algorithm"), c.algorithm);
   EXPECT_EQ(kv.size(), keys.size() + 1) << r.err;
@@ -1231,12 +1248,7 @@ TEST_F(Tool, path_stats_on_stderr)
     keys.insert(keys.end(), mmp_keys.begin(), mmp_keys.end());
     if(algorithm == "pmmp")
       keys.push_back("threads");
-    for(const std::string& key : keys) {
-      ASSERT_EQ(kv.count(key), 1u) << "missing " << key << " in:\n" << r.err;
-      char* end = nullptr;
-      const double value = std::strtod(kv.at(key).c_str(), &end);
-      EXPECT_TRUE(*end == '\0' && std::isfinite(value) && value >= 0) << key << "=" << kv.at(key);
-    }
+    ASSERT_NO_FATAL_FAILURE(expect_non_negative_numbers(kv, keys, r.err));
     EXPECT_EQ(kv.size(), keys.size() + 1) << r.err;
     EXPECT_EQ(kv.at("algorithm"), algorithm);
     if(algorithm == "pmmp")
