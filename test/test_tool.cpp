@@ -1,13 +1,22 @@
 // Copyright (c) 2026 The CGAL_ext geodesics developers.
-// Tests of the command-line tool `geodesic`, run as a separate process; each test works in its
-// own folder under the build directory (kept when the test fails, for inspection).
+// Tests of the command-line tool `geodesic`: its parts called directly (the checking of the
+// command line, the writers), and the tool run as a separate process. Each test of the tool, or
+// of its writers, works in its own folder under the build directory (kept when the test fails,
+// for inspection).
 
+#include "tool_error.h"
+#include "tool_mesh.h"
+#include "tool_options.h"
+#include "tool_output.h"
+#include "tool_text.h"
+
+#include <CGAL_ext/Geodesics_3/Tolerances.h>
+#include <CGAL_ext/Geodesics_3/polyline_length.h>
 #include <CGAL_ext/geodesic_distances.h>
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/IO/polygon_soup_io.h>
-#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
-#include <CGAL/Surface_mesh.h>
+#include <CGAL/IO/PLY.h>
+
+#include <CLI/CLI.hpp>
 
 #include <gtest/gtest.h>
 
@@ -22,8 +31,10 @@
 #include <fstream>
 #include <limits>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -31,12 +42,16 @@
 namespace {
 
 namespace fs = std::filesystem;
-typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
-typedef K::Point_3 Point;
-typedef CGAL::Surface_mesh<Point> Mesh;
-typedef Mesh::Vertex_index Vertex_index;
-typedef Mesh::Face_index Face_index;
-typedef std::vector<std::vector<std::size_t>> Polygons;
+namespace tool = geodesic_tool;
+using CGAL_ext::polyline_length;
+// the tool's mesh, read and built the tool's way
+using tool::Face_index;
+using tool::Mesh;
+using tool::Point;
+using tool::read_soup;
+using tool::Soup;
+using tool::soup_to_mesh;
+using tool::Vertex_index;
 
 const std::string elephant = std::string(CGAL_EXT_DATA_DIR) + "/elephant.off";
 const std::string mushroom = std::string(CGAL_EXT_DATA_DIR) + "/mushroom.off";
@@ -90,6 +105,19 @@ std::map<std::string, std::string> parse_key_values(const std::string& text)
   return kv;
 }
 
+/// Expects each of `keys` once in the --stats output `stats` parsed as `kv`, with a finite,
+/// non-negative number.
+void expect_non_negative_numbers(const std::map<std::string, std::string>& kv, const std::vector<std::string>& keys,
+                                 const std::string& stats)
+{
+  for(const std::string& key : keys) {
+    ASSERT_EQ(kv.count(key), 1u) << "missing " << key << " in:\n" << stats;
+    char* end = nullptr;
+    const double value = std::strtod(kv.at(key).c_str(), &end);
+    EXPECT_TRUE(*end == '\0' && std::isfinite(value) && value >= 0) << key << "=" << kv.at(key);
+  }
+}
+
 /// Parses a polyline of the tool: one `x y z` line per point, nothing else.
 std::vector<Point> parse_points(const std::string& text)
 {
@@ -104,28 +132,90 @@ std::vector<Point> parse_points(const std::string& text)
   return points;
 }
 
-double polyline_length(const std::vector<Point>& points)
+/// A distances PLY of the tool, read back with CGAL: the mesh and, in vertex order, its points,
+/// distances and colours.
+struct Distances_ply
 {
-  double length = 0;
-  for(std::size_t i = 1; i < points.size(); ++i)
-    length += std::sqrt(CGAL::squared_distance(points[i - 1], points[i]));
-  return length;
+  Mesh mesh;
+  std::vector<Point> points;
+  std::vector<double> distances;
+  std::vector<CGAL::IO::Color> colors;
+};
+
+void read_distances_ply(const fs::path& file, Distances_ply& ply)
+{
+  std::ifstream in(file, std::ios::binary);
+  ASSERT_TRUE(CGAL::IO::read_PLY(in, ply.mesh));
+  const auto [distance, has_distance] = ply.mesh.property_map<Vertex_index, double>("v:distance");
+  ASSERT_TRUE(has_distance) << "no vertex property 'distance' in the PLY file";
+  const auto [color, has_color] = ply.mesh.property_map<Vertex_index, CGAL::IO::Color>("v:color");
+  ASSERT_TRUE(has_color);
+  for(Vertex_index v : ply.mesh.vertices()) {
+    ply.points.push_back(ply.mesh.point(v));
+    ply.distances.push_back(distance[v]);
+    ply.colors.push_back(color[v]);
+  }
+}
+
+/// Checks a polyline in the tool's OBJ: the points as `v` lines, then one `l` line through them in
+/// order (none for a single point), and comments.
+void expect_obj_polyline(const std::string& text, const std::vector<Point>& points)
+{
+  std::vector<Point> obj;
+  std::vector<std::string> polylines;
+  for(const std::string& line : lines_of(text)) {
+    std::istringstream in(line);
+    std::string tag;
+    in >> tag;
+    if(tag == "v") {
+      double x, y, z;
+      ASSERT_TRUE(in >> x >> y >> z) << line;
+      obj.emplace_back(x, y, z);
+    } else if(tag == "l") {
+      polylines.push_back(line);
+    } else {
+      EXPECT_EQ(tag, "#") << line;
+    }
+  }
+  EXPECT_EQ(obj, points);
+  std::string expected = "l";
+  for(std::size_t i = 1; i <= points.size(); ++i)
+    expected += " " + std::to_string(i);
+  EXPECT_EQ(polylines, points.size() >= 2 ? std::vector<std::string>{expected} : std::vector<std::string>{});
+}
+
+/// Checks a polyline in the tool's PLY: ASCII, a vertex element with the points and an edge
+/// element between consecutive points.
+void expect_ply_polyline(const std::string& text, const std::vector<Point>& points)
+{
+  const std::size_t n = points.size();
+  ASSERT_GE(n, 1u);
+  const std::vector<std::string> lines = lines_of(text);
+  const auto end = std::find(lines.begin(), lines.end(), "end_header");
+  ASSERT_NE(end, lines.end());
+  const std::vector<std::string> header(lines.begin(), end);
+  ASSERT_GE(header.size(), 2u);
+  EXPECT_EQ(header[0], "ply");
+  EXPECT_EQ(header[1], "format ascii 1.0");
+  const auto has = [&](const std::string& line) {
+    return std::find(header.begin(), header.end(), line) != header.end();
+  };
+  EXPECT_TRUE(has("element vertex " + std::to_string(n)));
+  EXPECT_TRUE(has("element edge " + std::to_string(n - 1)));
+  for(const char* property : {"property double x", "property double y", "property double z",
+                              "property int vertex1", "property int vertex2"})
+    EXPECT_TRUE(has(property)) << property;
+  const std::vector<std::string> body(end + 1, lines.end());
+  ASSERT_EQ(body.size(), n + n - 1);
+  std::string points_text;
+  for(std::size_t i = 0; i < n; ++i)
+    points_text += body[i] + "\n";
+  EXPECT_EQ(parse_points(points_text), points);
+  for(std::size_t i = 0; i + 1 < n; ++i)
+    EXPECT_EQ(body[n + i], std::to_string(i) + " " + std::to_string(i + 1));
 }
 
 double distance_between(const Point& a, const Point& b) { return std::sqrt(CGAL::squared_distance(a, b)); }
-
-struct Soup
-{
-  std::vector<Point> points;
-  Polygons polygons;
-};
-
-Soup read_soup(const std::string& path)
-{
-  Soup soup;
-  EXPECT_TRUE(CGAL::IO::read_polygon_soup(path, soup.points, soup.polygons));
-  return soup;
-}
 
 double bbox_diagonal(const Soup& soup)
 {
@@ -139,13 +229,6 @@ Point face_point(const Soup& soup, std::size_t face, const std::array<double, 3>
 {
   const std::vector<std::size_t>& p = soup.polygons[face];
   return CGAL::barycenter(soup.points[p[0]], b[0], soup.points[p[1]], b[1], soup.points[p[2]], b[2]);
-}
-
-Mesh soup_to_mesh(const Soup& soup)
-{
-  Mesh mesh;
-  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(soup.points, soup.polygons, mesh);
-  return mesh;
 }
 
 /// The vertices of face f in the order of the library's barycentric coordinates.
@@ -307,6 +390,431 @@ TEST_F(Tool, soup_to_mesh_keeps_the_file_order)
 }
 
 // ---------------------------------------------------------------------------------------------
+// The command line, checked without running the tool
+
+/// The message of the Tool_error that `f` throws; "" if it throws none.
+template <class F>
+std::string tool_error_of(F f)
+{
+  try {
+    f();
+  } catch(const tool::Tool_error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(Tool_options, surface_points_are_vertices_or_face_points)
+{
+  const tool::Surface_point v = tool::parse_surface_point("2774");
+  ASSERT_TRUE(v.vertex);
+  EXPECT_EQ(*v.vertex, 2774u);
+  EXPECT_EQ(v.text, "2774");
+  const tool::Surface_point f = tool::parse_surface_point("f:12:0.2:0.3:0.5", "target");
+  EXPECT_FALSE(f.vertex);
+  EXPECT_EQ(f.face, 12u);
+  EXPECT_EQ(f.barycentric, (std::array<double, 3>{{0.2, 0.3, 0.5}}));
+  EXPECT_EQ(f.text, "f:12:0.2:0.3:0.5");
+
+  // several sources, in command-line order; a corner is a face point too
+  const std::vector<tool::Surface_point> sources = tool::parse_sources({"7", "f:3:0:1:0", "0"});
+  ASSERT_EQ(sources.size(), 3u);
+  EXPECT_EQ(sources[0].vertex, std::optional<std::size_t>(7));
+  EXPECT_EQ(sources[1].vertex, std::nullopt);
+  EXPECT_EQ(sources[1].face, 3u);
+  EXPECT_EQ(sources[1].barycentric, (std::array<double, 3>{{0., 1., 0.}}));
+  EXPECT_EQ(sources[2].vertex, std::optional<std::size_t>(0));
+}
+
+// The tool refuses the face points the library would refuse, and no others.
+TEST(Tool_options, barycentric_coordinates_sum_to_1_within_the_library_tolerance)
+{
+  const double tolerance = CGAL_ext::Geodesics_3::barycentric_sum_tolerance;
+  const auto last_coordinate = [](double last) { return "f:0:0.25:0.25:" + tool::number_text(last); };
+  for(const double off : {0.5 * tolerance, -0.5 * tolerance}) {
+    const std::string text = last_coordinate(0.5 + off);
+    EXPECT_EQ(tool_error_of([&] { tool::parse_surface_point(text); }), "") << text;
+  }
+  for(const double off : {2 * tolerance, -2 * tolerance}) {
+    const std::string text = last_coordinate(0.5 + off);
+    const std::string error = tool_error_of([&] { tool::parse_surface_point(text); });
+    EXPECT_EQ(error.rfind("source '" + text + "': barycentric coordinates sum to " +
+                            (off > 0 ? "1.000000002" : "0.999999998"),
+                          0),
+              0u)
+      << error;
+    const std::string end = ", not 1";
+    EXPECT_TRUE(error.size() > end.size() && error.compare(error.size() - end.size(), end.size(), end) == 0)
+      << error;
+  }
+}
+
+struct Bad_point
+{
+  const char* text;
+  const char* role;
+  const char* message; // the whole error message
+};
+
+const Bad_point bad_points[] = {
+  {"12x", "source", "source '12x': expected a vertex id or f:FACE:b0:b1:b2"},
+  {"-1", "target", "target '-1': expected a vertex id or f:FACE:b0:b1:b2"},
+  {"", "source", "source '': expected a vertex id or f:FACE:b0:b1:b2"},
+  {"1.5", "source", "source '1.5': expected a vertex id or f:FACE:b0:b1:b2"},
+  {"f:1:0.5:0.5", "source", "source 'f:1:0.5:0.5': expected f:FACE:b0:b1:b2"},
+  {"f:1:0.2:0.3:0.5:", "target", "target 'f:1:0.2:0.3:0.5:': expected f:FACE:b0:b1:b2"},
+  {"f:x:0.2:0.3:0.5", "source", "source 'f:x:0.2:0.3:0.5': expected f:FACE:b0:b1:b2"},
+  {"f:-1:0.2:0.3:0.5", "source", "source 'f:-1:0.2:0.3:0.5': expected f:FACE:b0:b1:b2"},
+  {"f:1:0.5:x:0.5", "source", "source 'f:1:0.5:x:0.5': barycentric coordinate 'x' is not a number"},
+  {"f:1::0.5:0.5", "target", "target 'f:1::0.5:0.5': barycentric coordinate '' is not a number"},
+  {"f:1:nan:0.5:0.5", "target", "target 'f:1:nan:0.5:0.5': barycentric coordinate 'nan' is not a number"},
+  {"f:1:inf:0:0", "source", "source 'f:1:inf:0:0': barycentric coordinate 'inf' is not a number"},
+  {"f:1:1.5:-0.5:0", "source", "source 'f:1:1.5:-0.5:0': barycentric coordinates must be non-negative"},
+  {"f:1:0.5:0.5:0.5", "target", "target 'f:1:0.5:0.5:0.5': barycentric coordinates sum to 1.5, not 1"},
+  {"f:1:0:0:0", "source", "source 'f:1:0:0:0': barycentric coordinates sum to 0, not 1"},
+};
+
+TEST(Tool_options, bad_surface_points_are_named)
+{
+  for(const Bad_point& c : bad_points)
+    EXPECT_EQ(tool_error_of([&] { tool::parse_surface_point(c.text, c.role); }), c.message);
+  EXPECT_EQ(tool_error_of([] { tool::parse_sources({"0", "f:1:0.5:0.5:0.5", "12x"}); }),
+            "source 'f:1:0.5:0.5:0.5': barycentric coordinates sum to 1.5, not 1")
+    << "the first bad source is named";
+}
+
+TEST(Tool_options, points_out_of_the_mesh_are_named)
+{
+  // the elephant's counts
+  const auto error = [](const std::string& text, const char* role) {
+    return tool_error_of(
+      [&] { tool::check_surface_point_range(tool::parse_surface_point(text, role), 2775, 5558, role); });
+  };
+  EXPECT_EQ(error("2774", "source"), "");
+  EXPECT_EQ(error("f:5557:1:0:0", "target"), "");
+  EXPECT_EQ(error("2775", "source"), "source '2775': vertex 2775 is out of range (the mesh has 2775 vertices)");
+  EXPECT_EQ(error("f:5558:0.2:0.3:0.5", "target"),
+            "target 'f:5558:0.2:0.3:0.5': face 5558 is out of range (the mesh has 5558 faces)");
+}
+
+TEST(Tool_options, solver_defaults)
+{
+  const tool::Solver_choice distances = tool::solver_choice(tool::Distances_options().solver, false);
+  EXPECT_STREQ(distances.algorithm->name, "vtp");
+  EXPECT_EQ(distances.lambda, tool::default_lambda);
+  EXPECT_EQ(distances.threads, 0);
+  EXPECT_EQ(distances.batch_size, CGAL_ext::default_batch_size);
+  EXPECT_EQ(distances.max_distance, infinity);
+
+  const tool::Solver_choice path = tool::solver_choice(tool::Path_options().solver, true);
+  EXPECT_STREQ(path.algorithm->name, "fwp-mmp");
+  EXPECT_EQ(path.batch_size, CGAL_ext::default_window_batch_size);
+
+  // the batch of PMMP is windows, that of the other batched solvers window lists
+  tool::Solver_options pmmp;
+  pmmp.algorithm = "pmmp";
+  EXPECT_EQ(tool::solver_choice(pmmp, false).batch_size, CGAL_ext::default_window_batch_size);
+  tool::Solver_options pvtp;
+  pvtp.algorithm = "pvtp";
+  EXPECT_EQ(tool::solver_choice(pvtp, false).batch_size, CGAL_ext::default_batch_size);
+}
+
+TEST(Tool_options, solver_options_are_taken_as_given)
+{
+  tool::Solver_options options;
+  options.algorithm = "pavtp";
+  options.lambda = 0.5;
+  options.threads = 3;
+  options.batch_size = 16;
+  options.max_distance = 0;
+  const tool::Solver_choice choice = tool::solver_choice(options, false);
+  EXPECT_STREQ(choice.algorithm->name, "pavtp");
+  EXPECT_TRUE(choice.algorithm->parallel);
+  EXPECT_TRUE(choice.algorithm->approximate);
+  EXPECT_EQ(choice.algorithm->library, CGAL_ext::VTP);
+  EXPECT_EQ(choice.lambda, 0.5);
+  EXPECT_EQ(choice.threads, 3);
+  EXPECT_EQ(choice.batch_size, 16u);
+  EXPECT_EQ(choice.max_distance, 0.);
+
+  options = tool::Solver_options();
+  options.algorithm = "pmmp";
+  options.threads = 1;
+  options.batch_size = 7;
+  const tool::Solver_choice path = tool::solver_choice(options, true);
+  EXPECT_STREQ(path.algorithm->name, "pmmp");
+  EXPECT_EQ(path.algorithm->library, CGAL_ext::FWP_MMP);
+  EXPECT_EQ(path.threads, 1);
+  EXPECT_EQ(path.batch_size, 7u);
+}
+
+struct Bad_solver
+{
+  bool for_paths;
+  tool::Solver_options options; // {algorithm, lambda, threads, batch_size, max_distance}
+  const char* message;          // the whole error message
+};
+
+const double not_a_number = std::numeric_limits<double>::quiet_NaN();
+
+const Bad_solver bad_solvers[] = {
+  {false, {"dijkstra"}, "unknown algorithm 'dijkstra' (use vtp, pvtp, avtp, pavtp, fwp-mmp, mmp or pmmp)"},
+  {true, {"dijkstra"}, "unknown algorithm 'dijkstra' (use fwp-mmp, mmp or pmmp)"},
+  {false, {"VTP"}, "unknown algorithm 'VTP' (use vtp, pvtp, avtp, pavtp, fwp-mmp, mmp or pmmp)"},
+  {true, {"vtp"}, "--algorithm vtp keeps no windows and cannot trace paths (use fwp-mmp, mmp or pmmp)"},
+  {true, {"pavtp"}, "--algorithm pavtp keeps no windows and cannot trace paths (use fwp-mmp, mmp or pmmp)"},
+  {false, {"vtp", 8.}, "--lambda applies to avtp and pavtp only"},
+  {false, {"pmmp", 8.}, "--lambda applies to avtp and pavtp only"},
+  {false, {"avtp", 0.}, "--lambda must be a positive, finite number, got 0"},
+  {false, {"pavtp", -1.}, "--lambda must be a positive, finite number, got -1"},
+  {false, {"avtp", infinity}, "--lambda must be a positive, finite number, got inf"},
+  {false, {"avtp", not_a_number}, "--lambda must be a positive, finite number, got nan"},
+  {false, {"vtp", {}, 2}, "--threads applies to pvtp, pavtp and pmmp only"},
+  {false, {"avtp", {}, 2}, "--threads applies to pvtp, pavtp and pmmp only"},
+  {true, {"fwp-mmp", {}, 2}, "--threads applies to pmmp only"},
+  {false, {"pvtp", {}, 0}, "--threads must be a positive integer, got 0"},
+  {true, {"pmmp", {}, -2}, "--threads must be a positive integer, got -2"},
+  {false, {"mmp", {}, {}, 8}, "--batch-size applies to pvtp, avtp, pavtp and pmmp only"},
+  {true, {"mmp", {}, {}, 8}, "--batch-size applies to pmmp only"},
+  {false, {"avtp", {}, {}, 0}, "--batch-size must be a positive integer, got 0"},
+  {true, {"pmmp", {}, {}, -5}, "--batch-size must be a positive integer, got -5"},
+  {false, {"vtp", {}, {}, {}, -1.}, "--max-distance must be a non-negative number, got -1"},
+  {true, {"fwp-mmp", {}, {}, {}, not_a_number}, "--max-distance must be a non-negative number, got nan"},
+};
+
+TEST(Tool_options, bad_solver_options_are_named)
+{
+  for(const Bad_solver& c : bad_solvers)
+    EXPECT_EQ(tool_error_of([&] { tool::solver_choice(c.options, c.for_paths); }), c.message)
+      << (c.for_paths ? "path " : "distances ") << c.options.algorithm;
+}
+
+TEST(Tool_options, output_format_by_extension)
+{
+  EXPECT_EQ(tool::output_format("d.txt"), tool::Output_format::txt);
+  EXPECT_EQ(tool::output_format("out/D.PLY"), tool::Output_format::ply);
+  EXPECT_EQ(tool::output_format("p.txt", true), tool::Output_format::txt);
+  EXPECT_EQ(tool::output_format("p.Obj", true), tool::Output_format::obj);
+  EXPECT_EQ(tool::output_format("p.ply", true), tool::Output_format::ply);
+  const auto error = [](const std::string& file, bool obj_allowed) {
+    return tool_error_of([&] { tool::output_format(file, obj_allowed); });
+  };
+  EXPECT_EQ(error("d.obj", false), "unknown output format 'd.obj' (use .txt or .ply)");
+  EXPECT_EQ(error("distances", false), "unknown output format 'distances' (use .txt or .ply)");
+  EXPECT_EQ(error("d.txt.gz", false), "unknown output format 'd.txt.gz' (use .txt or .ply)");
+  EXPECT_EQ(error("p.vtk", true), "unknown output format 'p.vtk' (use .txt, .obj or .ply)");
+}
+
+/// The subcommands declared as main() declares them, to parse a command line.
+struct Command_line
+{
+  Command_line()
+  {
+    app.require_subcommand(0, 1);
+    tool::add_distances_command(app, distances);
+    tool::add_path_command(app, path);
+  }
+
+  /// CLI11's error for `arguments` (without the program name); "" if they parse.
+  std::string parse(const std::string& arguments)
+  {
+    try {
+      app.parse(arguments, false);
+    } catch(const CLI::ParseError& e) {
+      return e.what();
+    }
+    return "";
+  }
+
+  CLI::App app{"", "geodesic"};
+  tool::Distances_options distances;
+  tool::Path_options path;
+};
+
+TEST(Tool_command_line, distances_fills_its_options)
+{
+  Command_line defaults;
+  ASSERT_EQ(defaults.parse("distances m.off --source 0"), "");
+  const tool::Distances_options& d = defaults.distances;
+  EXPECT_EQ(d.mesh, "m.off");
+  EXPECT_EQ(d.sources, std::vector<std::string>{"0"});
+  EXPECT_EQ(d.solver.algorithm, "vtp");
+  EXPECT_EQ(d.solver.lambda, std::nullopt);
+  EXPECT_EQ(d.solver.threads, std::nullopt);
+  EXPECT_EQ(d.solver.batch_size, std::nullopt);
+  EXPECT_EQ(d.solver.max_distance, infinity);
+  EXPECT_EQ(d.output, "");
+  EXPECT_FALSE(d.stats);
+
+  Command_line all;
+  ASSERT_EQ(all.parse("distances m.off --source 0,f:1:0.2:0.3:0.5 --source 7 --algorithm pavtp --lambda 2 "
+                      "--threads 3 --batch-size 16 --max-distance 0.5 --output d.ply --stats"),
+            "");
+  const tool::Distances_options& o = all.distances;
+  EXPECT_EQ(o.sources, (std::vector<std::string>{"0", "f:1:0.2:0.3:0.5", "7"}));
+  EXPECT_EQ(o.solver.algorithm, "pavtp");
+  EXPECT_EQ(o.solver.lambda, std::optional<double>(2));
+  EXPECT_EQ(o.solver.threads, std::optional<int>(3));
+  EXPECT_EQ(o.solver.batch_size, std::optional<long long>(16));
+  EXPECT_EQ(o.solver.max_distance, 0.5);
+  EXPECT_EQ(o.output, "d.ply");
+  EXPECT_TRUE(o.stats);
+  EXPECT_EQ(all.path.mesh, "") << "the other subcommand's options are left alone";
+}
+
+TEST(Tool_command_line, path_fills_its_options)
+{
+  Command_line defaults;
+  ASSERT_EQ(defaults.parse("path m.off --source 0 --target f:2:1:0:0"), "");
+  EXPECT_EQ(defaults.path.mesh, "m.off");
+  EXPECT_EQ(defaults.path.sources, std::vector<std::string>{"0"});
+  EXPECT_EQ(defaults.path.target, "f:2:1:0:0");
+  EXPECT_EQ(defaults.path.solver.algorithm, "fwp-mmp");
+  EXPECT_EQ(defaults.path.output, "");
+  EXPECT_FALSE(defaults.path.stats);
+
+  Command_line all;
+  ASSERT_EQ(all.parse("path m.off --source 1,2 --target 5 --algorithm pmmp --threads 2 --batch-size 64 "
+                      "--max-distance 3 --output p.obj --stats"),
+            "");
+  const tool::Path_options& p = all.path;
+  EXPECT_EQ(p.sources, (std::vector<std::string>{"1", "2"}));
+  EXPECT_EQ(p.target, "5");
+  EXPECT_EQ(p.solver.algorithm, "pmmp");
+  EXPECT_EQ(p.solver.threads, std::optional<int>(2));
+  EXPECT_EQ(p.solver.batch_size, std::optional<long long>(64));
+  EXPECT_EQ(p.solver.max_distance, 3.);
+  EXPECT_EQ(p.output, "p.obj");
+  EXPECT_TRUE(p.stats);
+}
+
+TEST(Tool_command_line, bad_command_lines_name_the_argument)
+{
+  const std::pair<const char*, const char*> bad[] = {
+    // the command line, and what its error must name
+    {"distances m.off --source 0 --threads 1.5", "--threads"},
+    {"distances m.off --source 0 --batch-size many", "--batch-size"},
+    {"distances m.off --source 0 --max-distance far", "--max-distance"},
+    {"distances m.off --source 0 --lambda coarse", "--lambda"},
+    {"distances m.off", "--source"},
+    {"distances --source 0", "MESH"},
+    {"distances m.off --source 0 --colour", "--colour"},
+    {"distance m.off --source 0", "distance"},
+    {"path m.off --source 0", "--target"},
+    {"path m.off --target 1", "--source"},
+    {"path m.off --source 0 --target 1 --target 2", "--target"},
+    {"path m.off --source 0 --target 1 --lambda 8", "--lambda"},
+  };
+  for(const auto& [arguments, named] : bad) {
+    const std::string error = Command_line().parse(arguments);
+    EXPECT_NE(error.find(named), std::string::npos) << arguments << ": '" << error << "'";
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// The writers, called directly
+
+/// A tetrahedron built the tool's way, with `d` in its vertex property "v:distance".
+class Tool_output : public Tool
+{
+protected:
+  Tool_output()
+  {
+    soup.points = {Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(0, 0, 1)};
+    soup.polygons = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}};
+    tool::check_soup(soup);
+    mesh = soup_to_mesh(soup);
+    distance = mesh.add_property_map<Vertex_index, double>("v:distance").first;
+    for(Vertex_index v : mesh.vertices())
+      distance[v] = d[v];
+  }
+
+  const std::vector<double> d = {0., 0.1, 1. / 3, infinity}; // vertex 3 unreached
+  Soup soup;
+  Mesh mesh;
+  tool::Distance_map distance;
+};
+
+TEST_F(Tool_output, distances_txt_reads_back_exactly)
+{
+  std::ostringstream os;
+  ASSERT_TRUE(tool::write_distances_txt(os, mesh, distance));
+  EXPECT_EQ(os.str(), "0\n0.10000000000000001\n0.33333333333333331\ninf\n");
+  EXPECT_EQ(parse_distances(os.str()), d);
+}
+
+TEST_F(Tool_output, distances_ply_reads_back_with_cgal)
+{
+  tool::write_output(path("d.ply").string(),
+                     [&](std::ostream& os) { return tool::write_distances_ply(os, mesh, distance); });
+  EXPECT_EQ(files(), std::set<std::string>{"d.ply"});
+  Distances_ply ply;
+  ASSERT_NO_FATAL_FAILURE(read_distances_ply(path("d.ply"), ply));
+  ASSERT_EQ(ply.mesh.number_of_faces(), 4u);
+  EXPECT_EQ(ply.points, soup.points);
+  EXPECT_EQ(ply.distances, d);
+  ASSERT_EQ(ply.colors.size(), d.size());
+  for(std::size_t v = 0; v < d.size(); ++v)
+    EXPECT_EQ(ply.colors[v], tool::distance_color(d[v], 1. / 3)) << "vertex " << v;
+  // blue at the source, red at the farthest reached vertex, grey where unreached
+  EXPECT_EQ(ply.colors[0], CGAL::IO::Color(0, 0, 255));
+  EXPECT_EQ(ply.colors[2], CGAL::IO::Color(255, 0, 0));
+  EXPECT_EQ(ply.colors[3], CGAL::IO::Color(128, 128, 128));
+  EXPECT_EQ(tool::farthest_finite(mesh, distance), 1. / 3);
+}
+
+TEST_F(Tool_output, paths_read_back_exactly)
+{
+  const std::vector<Point> points = {Point(0.1, 1. / 3, -2.5e-300), Point(1e300, 2, 3), Point(-1, 0, 0.7)};
+  for(const std::vector<Point>& polyline : {points, std::vector<Point>{points[1]}}) {
+    SCOPED_TRACE(std::to_string(polyline.size()) + " points");
+    std::ostringstream txt, obj, ply;
+    ASSERT_TRUE(tool::write_path_txt(txt, polyline));
+    EXPECT_EQ(parse_points(txt.str()), polyline);
+    ASSERT_TRUE(tool::write_path_obj(obj, polyline));
+    expect_obj_polyline(obj.str(), polyline);
+    ASSERT_TRUE(tool::write_path_ply(ply, polyline));
+    expect_ply_polyline(ply.str(), polyline);
+  }
+}
+
+// Writing through a temporary file: an error leaves no file behind, and an existing file as it was.
+TEST_F(Tool_output, a_failed_write_leaves_no_partial_file)
+{
+  const auto complete = [](std::ostream& os) { return bool(os << "new content\n"); };
+  const auto fails_half_way = [](std::ostream& os) {
+    os << "partial";
+    os.setstate(std::ios::badbit);
+    return bool(os);
+  };
+  const auto throws_half_way = [](std::ostream& os) -> bool {
+    os << "partial";
+    throw std::runtime_error("stop");
+  };
+  const std::string file = path("d.txt").string();
+  write("d.txt", "previous content\n");
+  tool::write_output(file, complete);
+  EXPECT_EQ(read_text(file), "new content\n");
+  EXPECT_EQ(files(), std::set<std::string>{"d.txt"});
+
+  EXPECT_EQ(tool_error_of([&] { tool::write_output(file, fails_half_way); }), "cannot write '" + file + "'");
+  EXPECT_THROW(tool::write_output(file, throws_half_way), std::runtime_error);
+  EXPECT_EQ(read_text(file), "new content\n");
+  const std::string other = path("e.txt").string();
+  EXPECT_EQ(tool_error_of([&] { tool::write_output(other, fails_half_way); }), "cannot write '" + other + "'");
+  EXPECT_THROW(tool::write_output(other, throws_half_way), std::runtime_error);
+  EXPECT_EQ(files(), std::set<std::string>{"d.txt"});
+
+  // a folder in the way, a missing folder
+  fs::create_directory(path("folder.txt"));
+  const std::string folder = path("folder.txt").string(), missing = path("missing/m.txt").string();
+  EXPECT_EQ(tool_error_of([&] { tool::write_output(folder, complete); }), "cannot write '" + folder + "'");
+  EXPECT_EQ(tool_error_of([&] { tool::write_output(missing, complete); }), "cannot write '" + missing + "'");
+  EXPECT_EQ(files(), (std::set<std::string>{"d.txt", "folder.txt"}));
+  EXPECT_TRUE(fs::is_empty(path("folder.txt")));
+}
+
+// ---------------------------------------------------------------------------------------------
 // Results
 
 TEST_F(Tool, txt_output_on_the_elephant)
@@ -333,27 +841,17 @@ TEST_F(Tool, ply_output_holds_the_txt_distances)
 {
   const std::vector<double> d = distances("distances '" + elephant + "' --source 17");
   ASSERT_EQ(run("distances '" + elephant + "' --source 17 --output d.ply").exit_code, 0);
-  Mesh mesh;
-  std::ifstream in(path("d.ply"), std::ios::binary);
-  ASSERT_TRUE(CGAL::IO::read_PLY(in, mesh));
-  ASSERT_EQ(mesh.number_of_vertices(), 2775u);
-  ASSERT_EQ(mesh.number_of_faces(), 5558u);
-  const auto [ply_distance, has_distance] = mesh.property_map<Vertex_index, double>("v:distance");
-  ASSERT_TRUE(has_distance) << "no vertex property 'distance' in the PLY file";
-  std::vector<double> from_ply;
-  for(Vertex_index v : mesh.vertices())
-    from_ply.push_back(ply_distance[v]);
-  expect_same_distances(from_ply, d);
+  Distances_ply ply;
+  ASSERT_NO_FATAL_FAILURE(read_distances_ply(path("d.ply"), ply));
+  ASSERT_EQ(ply.mesh.number_of_vertices(), 2775u);
+  ASSERT_EQ(ply.mesh.number_of_faces(), 5558u);
+  expect_same_distances(ply.distances, d);
 
   // the geometry is the file's, and the ramp goes from blue (near) to red (far)
-  const Soup soup = read_soup(elephant);
-  for(Vertex_index v : mesh.vertices())
-    ASSERT_EQ(mesh.point(v), soup.points[v]) << "vertex " << v;
-  const auto [color, has_color] = mesh.property_map<Vertex_index, CGAL::IO::Color>("v:color");
-  ASSERT_TRUE(has_color);
-  EXPECT_EQ(color[Vertex_index(17)], CGAL::IO::Color(0, 0, 255));
-  const Vertex_index far(static_cast<Mesh::size_type>(std::max_element(d.begin(), d.end()) - d.begin()));
-  EXPECT_EQ(color[far], CGAL::IO::Color(255, 0, 0));
+  EXPECT_EQ(ply.points, read_soup(elephant).points);
+  EXPECT_EQ(ply.colors[17], CGAL::IO::Color(0, 0, 255));
+  const std::size_t far = std::max_element(d.begin(), d.end()) - d.begin();
+  EXPECT_EQ(ply.colors[far], CGAL::IO::Color(255, 0, 0));
 }
 
 // Barycentric coordinates on the command line follow the file's order of the face's vertices,
@@ -480,12 +978,7 @@ TEST_P(Stats, on_stderr)
     keys.push_back("lambda");
   if(is_mmp(c.algorithm))
     keys.insert(keys.end(), mmp_keys.begin(), mmp_keys.end());
-  for(const std::string& key : keys) {
-    ASSERT_EQ(kv.count(key), 1u) << "missing " << key << " in:\n" << r.err;
-    char* end = nullptr;
-    const double value = std::strtod(kv.at(key).c_str(), &end);
-    EXPECT_TRUE(*end == '\0' && std::isfinite(value) && value >= 0) << key << "=" << kv.at(key);
-  }
+  ASSERT_NO_FATAL_FAILURE(expect_non_negative_numbers(kv, keys, r.err));
   ASSERT_EQ(kv.count("algorithm"), 1u) << r.err;
   EXPECT_EQ(kv.at("algorithm"), c.algorithm);
   EXPECT_EQ(kv.size(), keys.size() + 1) << r.err;
@@ -669,57 +1162,14 @@ TEST_F(Tool, path_obj_and_ply_hold_the_txt_points)
   const std::string args = "path '" + elephant + "' --source 0 --target f:40:0.6:0.3:0.1";
   const std::vector<Point> txt = path_points(args);
   ASSERT_GE(txt.size(), 3u);
-  const std::size_t n = txt.size();
 
   // OBJ: the points as `v` lines, then one `l` line through them in order
   ASSERT_EQ(run(args + " --output p.obj").exit_code, 0);
-  std::vector<Point> obj;
-  std::vector<std::string> polylines;
-  for(const std::string& line : lines_of(read_text(path("p.obj")))) {
-    std::istringstream in(line);
-    std::string tag;
-    in >> tag;
-    if(tag == "v") {
-      double x, y, z;
-      ASSERT_TRUE(in >> x >> y >> z) << line;
-      obj.emplace_back(x, y, z);
-    } else if(tag == "l") {
-      polylines.push_back(line);
-    } else {
-      EXPECT_EQ(tag, "#") << line;
-    }
-  }
-  EXPECT_EQ(obj, txt);
-  std::string expected = "l";
-  for(std::size_t i = 1; i <= n; ++i)
-    expected += " " + std::to_string(i);
-  EXPECT_EQ(polylines, std::vector<std::string>{expected});
+  expect_obj_polyline(read_text(path("p.obj")), txt);
 
   // PLY: ASCII, a vertex element and an edge element between consecutive points
   ASSERT_EQ(run(args + " --output p.ply").exit_code, 0);
-  const std::vector<std::string> lines = lines_of(read_text(path("p.ply")));
-  const auto end = std::find(lines.begin(), lines.end(), "end_header");
-  ASSERT_NE(end, lines.end());
-  const std::vector<std::string> header(lines.begin(), end);
-  ASSERT_GE(header.size(), 2u);
-  EXPECT_EQ(header[0], "ply");
-  EXPECT_EQ(header[1], "format ascii 1.0");
-  const auto has = [&](const std::string& line) {
-    return std::find(header.begin(), header.end(), line) != header.end();
-  };
-  EXPECT_TRUE(has("element vertex " + std::to_string(n)));
-  EXPECT_TRUE(has("element edge " + std::to_string(n - 1)));
-  for(const char* property : {"property double x", "property double y", "property double z",
-                              "property int vertex1", "property int vertex2"})
-    EXPECT_TRUE(has(property)) << property;
-  const std::vector<std::string> body(end + 1, lines.end());
-  ASSERT_EQ(body.size(), n + n - 1);
-  std::string points_text;
-  for(std::size_t i = 0; i < n; ++i)
-    points_text += body[i] + "\n";
-  EXPECT_EQ(parse_points(points_text), txt);
-  for(std::size_t i = 0; i + 1 < n; ++i)
-    EXPECT_EQ(body[n + i], std::to_string(i) + " " + std::to_string(i + 1));
+  expect_ply_polyline(read_text(path("p.ply")), txt);
 }
 
 TEST_F(Tool, path_from_a_face_point_to_a_vertex)
@@ -798,12 +1248,7 @@ TEST_F(Tool, path_stats_on_stderr)
     keys.insert(keys.end(), mmp_keys.begin(), mmp_keys.end());
     if(algorithm == "pmmp")
       keys.push_back("threads");
-    for(const std::string& key : keys) {
-      ASSERT_EQ(kv.count(key), 1u) << "missing " << key << " in:\n" << r.err;
-      char* end = nullptr;
-      const double value = std::strtod(kv.at(key).c_str(), &end);
-      EXPECT_TRUE(*end == '\0' && std::isfinite(value) && value >= 0) << key << "=" << kv.at(key);
-    }
+    ASSERT_NO_FATAL_FAILURE(expect_non_negative_numbers(kv, keys, r.err));
     EXPECT_EQ(kv.size(), keys.size() + 1) << r.err;
     EXPECT_EQ(kv.at("algorithm"), algorithm);
     if(algorithm == "pmmp")

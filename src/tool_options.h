@@ -1,0 +1,130 @@
+// Copyright (c) 2026 The CGAL_ext geodesics developers.
+// The command line of the geodesic tool: the options of each subcommand, and their checking
+// (solver options, sources and targets, output file names). Every check throws Tool_error
+// naming the option or the point and what is wrong with it.
+
+#ifndef GEODESIC_TOOL_OPTIONS_H
+#define GEODESIC_TOOL_OPTIONS_H
+
+#include <CGAL_ext/geodesic_distances.h>
+
+#include <array>
+#include <cstddef>
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace CLI {
+class App;
+}
+
+namespace geodesic_tool {
+
+// ---------------------------------------------------------------------------------------------
+// The options as given
+
+/// The solver options of both subcommands.
+struct Solver_options
+{
+  std::string algorithm;
+  std::optional<double> lambda; // distances only
+  std::optional<int> threads;
+  std::optional<long long> batch_size;
+  double max_distance = std::numeric_limits<double>::infinity();
+};
+
+struct Distances_options
+{
+  std::string mesh;
+  std::vector<std::string> sources;
+  Solver_options solver{"vtp"};
+  std::string output;
+  bool stats = false;
+};
+
+struct Path_options
+{
+  std::string mesh;
+  std::vector<std::string> sources;
+  std::string target;
+  Solver_options solver{"fwp-mmp"};
+  std::string output;
+  bool stats = false;
+};
+
+/// Declares the subcommand `distances` of `app`, which fills `options`.
+void add_distances_command(CLI::App& app, Distances_options& options);
+
+/// Declares the subcommand `path` of `app`, which fills `options`.
+void add_path_command(CLI::App& app, Path_options& options);
+
+// ---------------------------------------------------------------------------------------------
+// The solver
+
+/// The solvers of the library, as named on the command line.
+struct Algorithm
+{
+  const char* name;
+  bool parallel;                        // CGAL::Parallel_tag
+  bool approximate;                     // the named parameter approximation(lambda)
+  CGAL_ext::Geodesic_algorithm library; // the named parameter algorithm()
+};
+
+inline const Algorithm algorithms[] = {
+  {"vtp", false, false, CGAL_ext::VTP},      {"pvtp", true, false, CGAL_ext::VTP},
+  {"avtp", false, true, CGAL_ext::VTP},      {"pavtp", true, true, CGAL_ext::VTP},
+  {"fwp-mmp", false, false, CGAL_ext::FWP_MMP}, {"mmp", false, false, CGAL_ext::MMP},
+  {"pmmp", true, false, CGAL_ext::FWP_MMP}};
+
+/// Whether the solver keeps its windows on the edges (the MMP family), which paths need.
+inline bool keeps_windows(const Algorithm& a) { return a.library != CGAL_ext::VTP; }
+
+constexpr double default_lambda = 8;
+
+/// The validated choice of solver and its parameters.
+struct Solver_choice
+{
+  const Algorithm* algorithm = &algorithms[0];
+  double lambda = default_lambda; // approximate solvers only
+  int threads = 0;                // parallel solvers only; 0: TBB's default
+  std::size_t batch_size = CGAL_ext::default_batch_size;
+  double max_distance = std::numeric_limits<double>::infinity();
+};
+
+/// Checks the solver options of `distances`, or of `path` (`for_paths`: the MMP family only).
+Solver_choice solver_choice(const Solver_options& options, bool for_paths);
+
+// ---------------------------------------------------------------------------------------------
+// Sources and targets
+
+/// A source or a target as written on the command line: a vertex id, or a face id and
+/// barycentric coordinates in the order of the face's vertices in the file.
+struct Surface_point
+{
+  std::string text;
+  std::optional<std::size_t> vertex;
+  std::size_t face = 0;
+  std::array<double, 3> barycentric{{0., 0., 0.}};
+};
+
+/// `role` ("source" or "target") names the point in error messages.
+Surface_point parse_surface_point(const std::string& text, const char* role = "source");
+
+std::vector<Surface_point> parse_sources(const std::vector<std::string>& texts);
+
+/// Checks the vertex or face id of `point` against a mesh of that many vertices and faces.
+void check_surface_point_range(const Surface_point& point, std::size_t number_of_vertices,
+                               std::size_t number_of_faces, const char* role = "source");
+
+// ---------------------------------------------------------------------------------------------
+// Output files
+
+enum class Output_format { txt, obj, ply };
+
+/// The format of an output file, by its extension; .obj only where `obj_allowed` (paths).
+Output_format output_format(const std::string& path, bool obj_allowed = false);
+
+} // namespace geodesic_tool
+
+#endif // GEODESIC_TOOL_OPTIONS_H

@@ -1,0 +1,208 @@
+// Copyright (c) 2026 The CGAL_ext geodesics developers.
+
+#include "tool_solvers.h"
+
+#include "tool_error.h"
+#include "tool_stats.h"
+#include "tool_text.h"
+
+#include <CGAL_ext/Surface_mesh_geodesic_paths.h>
+#include <CGAL_ext/geodesic_distances.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#include <tbb/task_arena.h>
+#endif
+
+#include <algorithm>
+#include <iterator>
+#include <optional>
+
+namespace geodesic_tool {
+
+namespace {
+
+const double infinity = std::numeric_limits<double>::infinity();
+
+#ifdef CGAL_LINKED_WITH_TBB
+typedef CGAL::Parallel_tag Parallel_tag;
+#else
+typedef CGAL::Sequential_tag Parallel_tag; // never run: solver_choice() refuses the parallel solvers
+#endif
+
+/// While alive, lets the library's arena of `threads` threads (0: TBB's default) have them all.
+/// Otherwise TBB caps its workers at the number of cores minus one and, asked for more, prints a
+/// warning on the standard error. The tool owns its process, so a process-wide limit is fine here.
+class Thread_allowance
+{
+public:
+  explicit Thread_allowance(int threads)
+  {
+#ifdef CGAL_LINKED_WITH_TBB
+    if(threads > 0)
+      m_control.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
+#else
+    (void)threads;
+#endif
+  }
+
+private:
+#ifdef CGAL_LINKED_WITH_TBB
+  std::optional<tbb::global_control> m_control;
+#endif
+};
+
+/// The library orders barycentric coordinates from source(halfedge(f)); Euler::add_face() does
+/// not make that the polygon's first vertex, so the file order is mapped corner by corner.
+Face_location library_location(const Mesh& mesh, const std::vector<std::size_t>& polygon, Face_index f,
+                               const std::array<double, 3>& file_barycentric)
+{
+  Face_location location(f, {{0., 0., 0.}});
+  int k = 0;
+  for(auto h : CGAL::halfedges_around_face(mesh.halfedge(f), mesh)) {
+    const std::size_t v = mesh.source(h);
+    location.second[k++] = file_barycentric[std::find(polygon.begin(), polygon.end(), v) - polygon.begin()];
+  }
+  return location;
+}
+
+/// A face point of the command line, in the library's order of the face's corners.
+Face_location library_location(const Mesh& mesh, const Polygons& polygons, const Surface_point& s)
+{
+  const Face_index f(static_cast<Mesh::size_type>(s.face));
+  return library_location(mesh, polygons[s.face], f, s.barycentric);
+}
+
+/// A vertex source as a corner of one of its faces, so that it can join face-point sources.
+Face_location vertex_location(const Mesh& mesh, const Surface_point& s)
+{
+  const Vertex_index v(static_cast<Mesh::size_type>(*s.vertex));
+  for(auto h : CGAL::halfedges_around_target(v, mesh)) {
+    if(mesh.is_border(h))
+      continue;
+    const Face_index f = mesh.face(h);
+    std::array<double, 3> barycentric{{0., 0., 0.}};
+    int k = 0;
+    for(auto g : CGAL::halfedges_around_face(mesh.halfedge(f), mesh))
+      barycentric[k++] = mesh.source(g) == v ? 1. : 0.;
+    return Face_location(f, barycentric);
+  }
+  throw Tool_error("source '" + s.text + "': an isolated vertex cannot be mixed with face-point sources");
+}
+
+Vertex_index vertex_of(const Surface_point& s) { return Vertex_index(static_cast<Mesh::size_type>(*s.vertex)); }
+
+/// The library call for one concurrency tag; `approximation` is a named parameter that is
+/// either present or absent, so it is chosen here rather than given a neutral value.
+template <class ConcurrencyTag, class LibrarySources, class NamedParameters>
+void solve_with(const Mesh& mesh, Distance_map distance, const LibrarySources& sources,
+                const Solver_choice& choice, const NamedParameters& np)
+{
+  if(choice.algorithm->approximate)
+    CGAL_ext::geodesic_distances<ConcurrencyTag>(mesh, distance, sources, np.approximation(choice.lambda));
+  else
+    CGAL_ext::geodesic_distances<ConcurrencyTag>(mesh, distance, sources, np);
+}
+
+/// The one place that maps the algorithm choice to the library call.
+template <class LibrarySources>
+void solve(const Mesh& mesh, Distance_map distance, const LibrarySources& sources, const Solver_choice& choice,
+           CGAL_ext::Geodesic_statistics& stats)
+{
+  const auto np = CGAL_ext::parameters::max_distance(choice.max_distance)
+                    .statistics(stats)
+                    .batch_size(choice.batch_size)
+                    .algorithm(choice.algorithm->library);
+  if(choice.algorithm->parallel) {
+    const Thread_allowance allowance(choice.threads);
+    solve_with<Parallel_tag>(mesh, distance, sources, choice, np.number_of_threads(choice.threads));
+  } else {
+    solve_with<CGAL::Sequential_tag>(mesh, distance, sources, choice, np);
+  }
+}
+
+template <class ConcurrencyTag>
+Path_result trace_path_with(const Mesh& mesh, const Polygons& polygons, const std::vector<Surface_point>& sources,
+                            const Surface_point& target, const Solver_choice& choice)
+{
+  typedef CGAL_ext::Surface_mesh_geodesic_paths<Mesh, ConcurrencyTag> Paths;
+  Path_result result;
+  const Stopwatch build_watch;
+  Paths paths(mesh);
+  for(const Surface_point& s : sources) {
+    if(s.vertex)
+      paths.add_source(vertex_of(s));
+    else
+      paths.add_source(library_location(mesh, polygons, s));
+  }
+  {
+    const Thread_allowance allowance(choice.algorithm->parallel ? choice.threads : 0);
+    paths.build(CGAL_ext::parameters::max_distance(choice.max_distance)
+                  .statistics(result.stats)
+                  .batch_size(choice.batch_size)
+                  .number_of_threads(choice.algorithm->parallel ? choice.threads : 0)
+                  .algorithm(choice.algorithm->library));
+  }
+  result.seconds_build = build_watch.seconds();
+
+  const Stopwatch query_watch;
+  const auto query = [&](const auto& point) {
+    result.distance = paths.distance(point);
+    if(!(result.distance < infinity))
+      throw Tool_error("target '" + target.text +
+                       "' is not reached by any source (it lies in another connected component" +
+                       (choice.max_distance < infinity ? " or beyond --max-distance)" : ")"));
+    result.nearest_source = paths.nearest_source(point);
+    paths.shortest_path_points(point, std::back_inserter(result.points));
+  };
+  if(target.vertex)
+    query(vertex_of(target));
+  else
+    query(library_location(mesh, polygons, target));
+  result.seconds_query = query_watch.seconds();
+  if(result.points.empty() || result.nearest_source >= sources.size())
+    throw Tool_error("internal error: no path to target '" + target.text + "' at distance " +
+                     number_text(result.distance) + "; please report it");
+  return result;
+}
+
+} // namespace
+
+int effective_threads(const Solver_choice& choice)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  if(choice.threads == 0)
+    return tbb::this_task_arena::max_concurrency(); // what the library's automatic arena gets
+#endif
+  return choice.threads;
+}
+
+Distance_map compute_distances(Mesh& mesh, const Polygons& polygons, const std::vector<Surface_point>& sources,
+                               const Solver_choice& choice, CGAL_ext::Geodesic_statistics& stats)
+{
+  auto distance = mesh.add_property_map<Vertex_index, double>("v:distance", infinity).first;
+  // The library takes a range of one kind of source: vertices, or face locations.
+  const bool only_vertices =
+    std::all_of(sources.begin(), sources.end(), [](const Surface_point& s) { return bool(s.vertex); });
+  if(only_vertices) {
+    std::vector<Vertex_index> vertices;
+    for(const Surface_point& s : sources)
+      vertices.push_back(vertex_of(s));
+    solve(mesh, distance, vertices, choice, stats);
+  } else {
+    std::vector<Face_location> locations;
+    for(const Surface_point& s : sources)
+      locations.push_back(s.vertex ? vertex_location(mesh, s) : library_location(mesh, polygons, s));
+    solve(mesh, distance, locations, choice, stats);
+  }
+  return distance;
+}
+
+Path_result trace_path(const Mesh& mesh, const Polygons& polygons, const std::vector<Surface_point>& sources,
+                       const Surface_point& target, const Solver_choice& choice)
+{
+  return choice.algorithm->parallel ? trace_path_with<Parallel_tag>(mesh, polygons, sources, target, choice)
+                                    : trace_path_with<CGAL::Sequential_tag>(mesh, polygons, sources, target, choice);
+}
+
+} // namespace geodesic_tool

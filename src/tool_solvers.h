@@ -1,0 +1,44 @@
+// Copyright (c) 2026 The CGAL_ext geodesics developers.
+// The library called for the geodesic tool: distances to every vertex, and a shortest path,
+// with the chosen solver, from the sources and the target as written on the command line.
+
+#ifndef GEODESIC_TOOL_SOLVERS_H
+#define GEODESIC_TOOL_SOLVERS_H
+
+#include "tool_mesh.h"
+#include "tool_options.h"
+
+#include <CGAL_ext/Geodesics_3/Geodesic_statistics.h>
+
+#include <cstddef>
+#include <limits>
+#include <vector>
+
+namespace geodesic_tool {
+
+/// The number of threads a parallel solver runs on.
+int effective_threads(const Solver_choice& choice);
+
+/// Runs the library and stores the distances in the vertex property "v:distance".
+Distance_map compute_distances(Mesh& mesh, const Polygons& polygons, const std::vector<Surface_point>& sources,
+                               const Solver_choice& choice, CGAL_ext::Geodesic_statistics& stats);
+
+/// A shortest path and what it took.
+struct Path_result
+{
+  std::vector<Point> points;                                      // from the source to the target
+  double distance = std::numeric_limits<double>::infinity();      // the library's distance of the target
+  std::size_t nearest_source = 0;                                 // among the sources, in command-line order
+  CGAL_ext::Geodesic_statistics stats;
+  double seconds_build = 0; // preparing the mesh, adding the sources and building the windows
+  double seconds_query = 0; // the distance, the nearest source and the path of the target
+};
+
+/// Builds the windows from `sources` with the chosen MMP solver and traces the path to `target`;
+/// throws Tool_error if no source reaches the target.
+Path_result trace_path(const Mesh& mesh, const Polygons& polygons, const std::vector<Surface_point>& sources,
+                       const Surface_point& target, const Solver_choice& choice);
+
+} // namespace geodesic_tool
+
+#endif // GEODESIC_TOOL_SOLVERS_H

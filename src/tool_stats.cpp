@@ -1,0 +1,53 @@
+// Copyright (c) 2026 The CGAL_ext geodesics developers.
+
+#include "tool_stats.h"
+
+#include "tool_solvers.h"
+#include "tool_text.h"
+
+#include <sys/resource.h>
+
+namespace geodesic_tool {
+
+double peak_rss_mb()
+{
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return double(usage.ru_maxrss) / 1024.; // kilobytes on Linux
+}
+
+void write_input_stats(std::ostream& s, const Solver_choice& choice, const Mesh& mesh, std::size_t sources,
+                       double seconds_read)
+{
+  s << "algorithm=" << choice.algorithm->name << "\n";
+  if(choice.algorithm->parallel)
+    s << "threads=" << effective_threads(choice) << "\n";
+  if(choice.algorithm->approximate)
+    s << "lambda=" << number_text(choice.lambda) << "\n";
+  s << "vertices=" << mesh.number_of_vertices() << "\n"
+    << "faces=" << mesh.number_of_faces() << "\n"
+    << "sources=" << sources << "\n"
+    << "seconds_read=" << seconds_read << "\n";
+}
+
+void write_solver_stats(std::ostream& s, const Solver_choice& choice, const CGAL_ext::Geodesic_statistics& stats)
+{
+  s << "seconds_setup=" << stats.seconds_setup << "\n"
+    << "seconds_solve=" << stats.seconds_solve << "\n"
+    << "seconds_selection=" << stats.seconds_selection << "\n"
+    << "seconds_propagation=" << stats.seconds_propagation << "\n"
+    << "seconds_merge=" << stats.seconds_merge << "\n"
+    << "windows_created=" << stats.windows_created << "\n"
+    << "peak_windows=" << stats.peak_windows << "\n"
+    << "lists_propagated=" << stats.lists_propagated << "\n"
+    << "wavefront_resets=" << stats.wavefront_resets << "\n";
+  if(keeps_windows(*choice.algorithm))
+    s << "windows_propagated=" << stats.windows_propagated << "\n"
+      << "windows_stored=" << stats.windows_stored << "\n"
+      << "stored_window_bytes=" << stats.stored_window_bytes << "\n"
+      << "seconds_organization=" << stats.seconds_organization << "\n"
+      << "seconds_clipping=" << stats.seconds_clipping << "\n"
+      << "seconds_pushing=" << stats.seconds_pushing << "\n";
+}
+
+} // namespace geodesic_tool
