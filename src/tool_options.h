@@ -6,7 +6,7 @@
 #ifndef GEODESIC_TOOL_OPTIONS_H
 #define GEODESIC_TOOL_OPTIONS_H
 
-#include <CGAL_ext/geodesic_distances.h>
+#include <CGAL_ext/Geodesics_3/Geodesic_algorithm.h>
 
 #include <array>
 #include <cstddef>
