@@ -6,12 +6,12 @@
 // Usage: draw_geodesic_path [output.ply] [mesh.off]
 //        (defaults: geodesic_paths.ply in the current directory, data/elephant.off)
 #include <CGAL_ext/Surface_mesh_geodesic_paths.h>
+#include "example_mesh.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/Color.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Surface_mesh.h>
-#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
 #include <algorithm>
 #include <array>
@@ -105,12 +105,9 @@ CGAL::IO::Color distance_color(double x)
 int main(int argc, char** argv)
 {
   const std::string output = argc > 1 ? argv[1] : std::string("geodesic_paths.ply");
-  const std::string filename = argc > 2 ? argv[2] : std::string(CGAL_EXT_DATA_DIR) + "/elephant.off";
   Mesh mesh;
-  if(!CGAL::IO::read_polygon_mesh(filename, mesh) || !CGAL::is_triangle_mesh(mesh)) {
-    std::cerr << "error: cannot read a triangle mesh from " << filename << "\n";
+  if(!read_example_mesh(argc, argv, 2, mesh))
     return EXIT_FAILURE;
-  }
 
   // The output starts as a copy of the mesh, coloured by the distance from the source.
   Mesh out = mesh;

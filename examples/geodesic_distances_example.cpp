@@ -1,10 +1,10 @@
 // Exact geodesic distances from one vertex and from a point inside a face, on a bundled mesh.
 // Usage: geodesic_distances_example [mesh.off]   (default: data/elephant.off)
 #include <CGAL_ext/geodesic_distances.h>
+#include "example_mesh.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
-#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
 #include <array>
 #include <cstdlib>
@@ -20,12 +20,9 @@ typedef Mesh::Face_index face_descriptor;
 
 int main(int argc, char** argv)
 {
-  const std::string filename = argc > 1 ? argv[1] : std::string(CGAL_EXT_DATA_DIR) + "/elephant.off";
   Mesh mesh;
-  if(!CGAL::IO::read_polygon_mesh(filename, mesh) || !CGAL::is_triangle_mesh(mesh)) {
-    std::cerr << "error: cannot read a triangle mesh from " << filename << "\n";
+  if(!read_example_mesh(argc, argv, 1, mesh))
     return EXIT_FAILURE;
-  }
   auto distance = mesh.add_property_map<vertex_descriptor, double>("v:distance", 0.).first;
 
   try {

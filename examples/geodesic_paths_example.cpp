@@ -2,10 +2,10 @@
 // paths, with CGAL_ext::Surface_mesh_geodesic_paths.
 // Usage: geodesic_paths_example [mesh.off]   (default: data/elephant.off)
 #include <CGAL_ext/Surface_mesh_geodesic_paths.h>
+#include "example_mesh.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
-#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -38,12 +38,9 @@ struct Print_path_point
 
 int main(int argc, char** argv)
 {
-  const std::string filename = argc > 1 ? argv[1] : std::string(CGAL_EXT_DATA_DIR) + "/elephant.off";
   Mesh mesh;
-  if(!CGAL::IO::read_polygon_mesh(filename, mesh) || !CGAL::is_triangle_mesh(mesh)) {
-    std::cerr << "error: cannot read a triangle mesh from " << filename << "\n";
+  if(!read_example_mesh(argc, argv, 1, mesh))
     return EXIT_FAILURE;
-  }
   const vertex_descriptor target(static_cast<Mesh::size_type>(num_vertices(mesh) / 2));
   const Geodesic_paths::Face_location face_point(face_descriptor(100), {{0.2, 0.3, 0.5}});
 
