@@ -17,6 +17,7 @@ namespace CGAL_ext {
 ///         `points` (0 for fewer than two points); the length of a shortest path given by
 ///         `Surface_mesh_geodesic_paths::shortest_path_points()` is the distance of its target.
 /// \tparam PointRange a range of 3D points with `x()`, `y()` and `z()` (CGAL's `Point_3`)
+/// \param points the polyline's points, in order
 template <class PointRange>
 double polyline_length(const PointRange& points)
 {
