@@ -19,7 +19,6 @@
 #include <array>
 #include <cstddef>
 #include <memory>
-#include <string>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -149,6 +148,15 @@ public:
   /// \throws Geodesic_error when the face is out of range or the coordinates are not a convex
   ///         combination
   std::size_t add_source(const Face_location& location) { return add(m_mesh.source_point(location)); }
+  /// adds a source at a point of a face given with barycentric coordinates of another number
+  /// type (`double` on an exact kernel, say).
+  /// \param location the face and barycentric coordinates of the point
+  /// \return the index of the source
+  template <class T>
+  std::size_t add_source(const std::pair<face_descriptor, std::array<T, 3>>& location)
+  {
+    return add(m_mesh.source_point(location));
+  }
   /// adds a source at a point of a face.
   /// \param f the face
   /// \param b barycentric coordinates of the point in `f`
@@ -208,15 +216,15 @@ public:
   /// \cgalNamedParamsEnd
   ///
   /// \throws Geodesic_error when no source was added, `algorithm` is not an MMP variant,
-  ///         `max_distance` is negative, `number_of_threads` negative or `batch_size` zero
+  ///         `max_distance` is negative, `number_of_threads` negative or `batch_size` zero, or
+  ///         when `approximation` or `stop_vertices` (VTP's parameters) are given
   template <class NamedParameters = parameters::Default_named_parameters_type>
   void build(const NamedParameters& np = parameters::default_values())
   {
     namespace internal = Geodesics_3::internal;
     // (CGAL::Parallel_if_available_tag is CGAL::Parallel_tag when TBB is linked)
     constexpr bool parallel = std::is_same<ConcurrencyTag, CGAL::Parallel_tag>::value;
-    if(m_sources.empty())
-      throw Geodesic_error("no source was given");
+    internal::check_has_sources(m_sources);
     const internal::Solver_settings settings = internal::read_solver_settings(np, FWP_MMP);
     if(settings.algorithm == VTP)
       throw Geodesic_error("Surface_mesh_geodesic_paths builds with MMP or FWP_MMP only, got algorithm VTP");
@@ -231,9 +239,7 @@ public:
                                                                 solver->nearest_sources(), solver->sources(),
                                                                 solver->max_distance());
     m_solver = std::move(solver);
-    m_statistics = m_solver->statistics();
-    m_statistics.seconds_setup = m_mesh.seconds();
-    internal::report_statistics(settings, m_statistics, m_mesh.seconds());
+    m_statistics = internal::report_statistics(settings, m_solver->statistics(), m_mesh.seconds());
   }
 
   /// \return whether `build()` ran since the sources last changed

@@ -15,6 +15,7 @@
 
 #include <CGAL/tags.h>
 
+#include <chrono>
 #include <type_traits>
 
 namespace CGAL_ext {
@@ -128,6 +129,7 @@ void geodesic_distances(const TriangleMesh& tm, VertexDistanceMap vertex_distanc
 #endif
   constexpr bool parallel = std::is_same<ConcurrencyTag, CGAL::Parallel_tag>::value;
   namespace internal = Geodesics_3::internal;
+  const auto start = std::chrono::steady_clock::now();
   typedef internal::Vertex_point_map_of<TriangleMesh, NamedParameters> Vertex_point_map;
   const internal::Solver_settings settings = internal::read_solver_settings(np, VTP);
 
@@ -150,9 +152,10 @@ void geodesic_distances(const TriangleMesh& tm, VertexDistanceMap vertex_distanc
     for(auto v : parameters::get_parameter(np, internal_np::stop_vertices))
       solver.add_stop_vertex(mesh.index(v));
   }
+  const double seconds_setup = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   internal::run_solver<parallel>(solver, settings.number_of_threads);
   mesh.write_vertex_values(vertex_distance_map, solver.distances());
-  internal::report_statistics(settings, solver.statistics(), mesh.seconds());
+  internal::report_statistics(settings, solver.statistics(), seconds_setup);
 }
 
 } // namespace CGAL_ext

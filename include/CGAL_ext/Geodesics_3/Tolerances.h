@@ -33,10 +33,13 @@ constexpr double quadratic_cancellation_ratio = 1e-14;
 /// length) of the expected distance is taken at once; a corner replaces an edge way only when
 /// shorter by more than this.
 constexpr double path_round_off_ratio = 1e-12;
-/// Path tracing: the way found straight ahead is trusted while it is within this fraction of the
-/// expected distance; beyond it, every way to the point is searched. Along an edge of length l,
-/// rays crossing it within this fraction of l from a window's interval still count as crossing.
-constexpr double path_search_ratio = 1e-9;
+/// Path tracing: the way found straight ahead is trusted while it is within this fraction (of
+/// the expected distance plus the mean edge length) of the expected distance; beyond it, every
+/// way to the point is searched.
+constexpr double path_straight_ahead_ratio = 1e-9;
+/// Path tracing: rays crossing an edge within this fraction of its length from a window's
+/// interval still count as crossing it through the window (round-off at the interval's ends).
+constexpr double path_window_end_ratio = 1e-9;
 
 } // namespace Geodesics_3
 } // namespace CGAL_ext

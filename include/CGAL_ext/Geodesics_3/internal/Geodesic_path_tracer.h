@@ -167,7 +167,7 @@ public:
           best_in_face(face_beyond, b, c, left);
         }
       }
-      if(c.kind == Candidate::NONE || (face_beyond >= 0 && c.distance > left + path_search_ratio * (left + m_mesh.mean_edge_length)))
+      if(c.kind == Candidate::NONE || (face_beyond >= 0 && c.distance > left + path_straight_ahead_ratio * (left + m_mesh.mean_edge_length)))
         c = best_way_to(p); // the window that led here was clipped since: look everywhere
       if(!(c.distance < infinity()))
         break;
@@ -314,7 +314,7 @@ private:
   {
     const std::array<double, 2> q = m_mesh.point_in_frame(h, b);
     const double qx = q[0], qy = q[1];
-    const double tolerance = path_search_ratio * m_mesh.frame[h].length;
+    const double tolerance = path_window_end_ratio * m_mesh.frame[h].length;
     for(const Edge_window* ew = m_windows.windows_of_edge(h); ew; ew = ew->next) {
       if(ew->halfedge != h)
         continue; // enters the face on the other side

@@ -3,7 +3,7 @@
 #define CGAL_EXT_GEODESICS_3_INTERNAL_GEODESIC_SETUP_H
 
 // What every public entry point does before and after a solver runs, written once: the named
-// parameters read and checked into one `Solver_settings`, the caller's mesh turned into the
+// parameters read and checked into one `Solver_settings` (Solver_settings.h), the caller's mesh turned into the
 // solvers' `Mesh_cache` (with the way back from indices to descriptors), sources converted, and
 // the solver run in a task arena of the requested size.
 
@@ -12,6 +12,7 @@
 #include <CGAL_ext/Geodesics_3/Geodesic_statistics.h>
 #include <CGAL_ext/Geodesics_3/Named_function_parameters.h>
 #include <CGAL_ext/Geodesics_3/internal/Mesh_cache.h>
+#include <CGAL_ext/Geodesics_3/internal/Solver_settings.h>
 #include <CGAL_ext/Geodesics_3/internal/Sources.h>
 #include <CGAL_ext/Geodesics_3/internal/Thread_sanitizer.h>
 
@@ -38,68 +39,6 @@
 namespace CGAL_ext {
 namespace Geodesics_3 {
 namespace internal {
-
-/// The named parameters that steer a solver, read and checked.
-struct Solver_settings
-{
-  Geodesic_algorithm algorithm = VTP;
-  double max_distance = std::numeric_limits<double>::infinity();
-  double approximation = 0; // lambda of AVTP; 0: exact
-  int number_of_threads = 0; // 0: TBB's choice
-  std::size_t batch_size = default_batch_size;
-  Geodesic_statistics* statistics = nullptr; // where to report, if anywhere
-};
-
-/// Reads `algorithm` (default `default_algorithm`), `max_distance`, `approximation`,
-/// `number_of_threads`, `batch_size` (default by algorithm) and `statistics` from `np`, and
-/// checks each, with one message each; `approximation` and `stop_vertices` go with VTP only.
-template <class NamedParameters>
-Solver_settings read_solver_settings(const NamedParameters& np, Geodesic_algorithm default_algorithm)
-{
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  using CGAL::parameters::is_default_parameter;
-  Solver_settings s;
-  s.algorithm = choose_parameter(get_parameter(np, CGAL::internal_np::algorithm), default_algorithm);
-  if(s.algorithm != VTP && s.algorithm != MMP && s.algorithm != FWP_MMP)
-    throw Geodesic_error("unknown geodesic algorithm " + std::to_string(int(s.algorithm)));
-
-  s.max_distance = choose_parameter(get_parameter(np, internal_np::max_distance), s.max_distance);
-  if(!(s.max_distance >= 0)) {
-    std::ostringstream msg;
-    msg << "max distance must be non-negative, got " << s.max_distance;
-    throw Geodesic_error(msg.str());
-  }
-
-  if constexpr(!is_default_parameter<NamedParameters, internal_np::approximation_t>::value) {
-    s.approximation = double(get_parameter(np, internal_np::approximation));
-    if(!(s.approximation > 0) || !std::isfinite(s.approximation)) {
-      std::ostringstream msg;
-      msg << "approximation lambda must be positive and finite, got " << s.approximation;
-      throw Geodesic_error(msg.str());
-    }
-    if(s.algorithm != VTP)
-      throw Geodesic_error("approximation works with the VTP algorithm only");
-  }
-  if constexpr(!is_default_parameter<NamedParameters, internal_np::stop_vertices_t>::value) {
-    if(s.algorithm != VTP)
-      throw Geodesic_error("stop_vertices works with the VTP algorithm only");
-  }
-
-  const long threads = static_cast<long>(choose_parameter(get_parameter(np, internal_np::number_of_threads), 0));
-  if(threads < 0)
-    throw Geodesic_error("number of threads must be non-negative, got " + std::to_string(threads));
-  s.number_of_threads = int(threads);
-
-  const auto batch = choose_parameter(get_parameter(np, internal_np::batch_size),
-                                      s.algorithm == VTP ? default_batch_size : default_window_batch_size);
-  if(!(batch > 0))
-    throw Geodesic_error("batch size must be positive, got " + std::to_string(batch));
-  s.batch_size = static_cast<std::size_t>(batch);
-
-  s.statistics = choose_parameter(get_parameter(np, internal_np::statistics), s.statistics);
-  return s;
-}
 
 template <class T, class = void>
 struct is_range : std::false_type {};
@@ -162,11 +101,13 @@ public:
     return d;
   }
 
-  /// A source given as a vertex.
+  /// A source given as a vertex (checked: a descriptor out of the mesh would otherwise read
+  /// as a face point).
   Source_point source_point(vertex_descriptor v) const
   {
     Source_point s;
     s.vertex = index(v);
+    check_vertex_index(*m_cache, s.vertex, "source");
     return s;
   }
   /// A source given as a face location: a face and barycentric coordinates in the order of the
@@ -226,13 +167,14 @@ void run_solver(Solver& solver, int threads)
   if constexpr(parallel) {
     tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
     // libtbb is not instrumented: state the hand-over into the arena and back
-    sanitizer_release(&solver);
+    char start = 0, done = 0;
+    sanitizer_release(&start);
+    const Sanitizer_on_exit back(sanitizer_acquire, &done);
     arena.execute([&] {
-      sanitizer_acquire(&solver);
+      sanitizer_acquire(&start);
+      const Sanitizer_on_exit end(sanitizer_release, &done);
       solver.run();
-      sanitizer_release(&solver);
     });
-    sanitizer_acquire(&solver);
     return;
   }
 #endif
@@ -240,12 +182,15 @@ void run_solver(Solver& solver, int threads)
   solver.run();
 }
 
-/// Gives the caller what a solver did, when it asked with `statistics`.
-inline void report_statistics(const Solver_settings& settings, Geodesic_statistics statistics, double seconds_setup)
+/// What a solver did, with the seconds of the set-up; also given to the caller when it asked
+/// with `statistics`.
+inline Geodesic_statistics report_statistics(const Solver_settings& settings, Geodesic_statistics statistics,
+                                             double seconds_setup)
 {
   statistics.seconds_setup = seconds_setup;
   if(settings.statistics)
     *settings.statistics = statistics;
+  return statistics;
 }
 
 } // namespace internal

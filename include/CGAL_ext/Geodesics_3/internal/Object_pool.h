@@ -42,7 +42,7 @@ public:
       s.free = p->next;
     else {
       if(s.used == block_size) {
-        s.blocks.emplace_back(new T[block_size]());
+        s.blocks.push_back(std::make_unique<T[]>(block_size));
         s.used = 0;
       }
       p = &s.blocks.back()[s.used++];

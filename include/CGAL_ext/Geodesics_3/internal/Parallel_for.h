@@ -42,24 +42,30 @@ void for_each_index(bool parallel, std::size_t n, std::size_t grain, const Funct
   grain = std::max<std::size_t>(grain, 1);
 #ifdef CGAL_LINKED_WITH_TBB
   if(parallel && n > grain && tbb::this_task_arena::max_concurrency() > 1) {
-    // libtbb is not instrumented: state the hand-over of the loop to its tasks and back.
-    sanitizer_release(const_cast<Function*>(&f));
-    tbb::parallel_for(
-      tbb::blocked_range<std::size_t>(0, n, grain),
-      [&f](const tbb::blocked_range<std::size_t>& r) {
-        sanitizer_acquire(const_cast<Function*>(&f));
-        const std::size_t slot = this_thread_slot();
-        for(std::size_t i = r.begin(); i != r.end(); ++i)
-          f(i, slot);
-        sanitizer_release(const_cast<Function*>(&f));
-      },
-      tbb::simple_partitioner());
-    sanitizer_acquire(const_cast<Function*>(&f));
+    // libtbb is not instrumented: state the hand-over of the loop to its chunks (`start`) and
+    // of the chunks back to the caller (`done`). Two tokens, so that a chunk that starts after
+    // another one ended is not ordered after it: a race between two chunks stays visible.
+    char start = 0, done = 0;
+    sanitizer_release(&start);
+    {
+      const Sanitizer_on_exit back(sanitizer_acquire, &done);
+      tbb::parallel_for(
+        tbb::blocked_range<std::size_t>(0, n, grain),
+        [&f, &start, &done](const tbb::blocked_range<std::size_t>& r) {
+          sanitizer_acquire(&start);
+          const Sanitizer_on_exit end(sanitizer_release, &done);
+          const std::size_t slot = this_thread_slot();
+          for(std::size_t i = r.begin(); i != r.end(); ++i)
+            f(i, slot);
+        },
+        tbb::simple_partitioner());
+    }
     return;
   }
 #endif
-  (void)parallel;
-  const std::size_t slot = this_thread_slot();
+  // In order, here; slot 0 when sequential (the only slot of sequential per-thread storage,
+  // whichever arena thread the caller is), the caller's slot when the arena has one thread.
+  const std::size_t slot = parallel ? this_thread_slot() : 0;
   for(std::size_t i = 0; i < n; ++i)
     f(i, slot);
 }

@@ -5,7 +5,7 @@
 #include <CGAL_ext/Geodesics_3/Geodesic_error.h>
 #include <CGAL_ext/Geodesics_3/Geodesic_statistics.h>
 #include <CGAL_ext/Geodesics_3/Tolerances.h>
-#include <CGAL_ext/Geodesics_3/internal/Geodesic_setup.h>
+#include <CGAL_ext/Geodesics_3/internal/Solver_settings.h>
 #include <CGAL_ext/Geodesics_3/internal/Mesh_cache.h>
 #include <CGAL_ext/Geodesics_3/internal/Sources.h>
 #include <CGAL_ext/Geodesics_3/internal/Window.h>
@@ -62,12 +62,6 @@ protected:
   Solver_base& operator=(const Solver_base&) = delete;
 
   static double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
-
-  void check_sources() const
-  {
-    if(m_sources.empty())
-      throw Geodesic_error("no source was given");
-  }
 
   /// Trims a window (in the frame of h) by the distances `d_from` and `d_to` of the source and
   /// target of h, and drops it when its smallest distance is beyond the window limit: false if

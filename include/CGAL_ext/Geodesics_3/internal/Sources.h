@@ -11,6 +11,7 @@
 #include <cmath>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace CGAL_ext {
 namespace Geodesics_3 {
@@ -24,6 +25,13 @@ struct Source_point
   int face = -1;
   std::array<double, 3> barycentric{{0., 0., 0.}};
 };
+
+/// Throws when there is no source to start from.
+inline void check_has_sources(const std::vector<Source_point>& sources)
+{
+  if(sources.empty())
+    throw Geodesic_error("no source was given");
+}
 
 /// Throws unless `v` is a vertex index of the mesh; `role` names the point ("source", ...).
 inline void check_vertex_index(const Mesh_cache& m, long v, const char* role)

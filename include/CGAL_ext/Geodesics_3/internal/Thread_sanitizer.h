@@ -45,6 +45,21 @@ inline void sanitizer_acquire(void* token)
 #endif
 }
 
+/// Calls `action(token)` (`sanitizer_release` or `sanitizer_acquire`) when it goes out of
+/// scope, also by an exception.
+class Sanitizer_on_exit
+{
+public:
+  Sanitizer_on_exit(void (*action)(void*), void* token) : m_action(action), m_token(token) {}
+  ~Sanitizer_on_exit() { m_action(m_token); }
+  Sanitizer_on_exit(const Sanitizer_on_exit&) = delete;
+  Sanitizer_on_exit& operator=(const Sanitizer_on_exit&) = delete;
+
+private:
+  void (*m_action)(void*);
+  void* m_token;
+};
+
 } // namespace internal
 } // namespace Geodesics_3
 } // namespace CGAL_ext

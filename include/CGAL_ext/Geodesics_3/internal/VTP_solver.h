@@ -12,14 +12,9 @@
 #include <CGAL_ext/Geodesics_3/internal/Window.h>
 
 #include <algorithm>
-#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
-#include <functional>
-#include <limits>
-#include <sstream>
-#include <utility>
 #include <vector>
 
 namespace CGAL_ext {
@@ -108,7 +103,7 @@ public:
   void run()
   {
     const auto start = Clock::now();
-    check_sources();
+    check_has_sources(m_sources);
     m_main_slot = m_pool.use_one_slot_per_thread(m_parallel);
     for(const Source_point& s : m_sources) {
       if(s.vertex >= 0) {
@@ -238,8 +233,9 @@ private:
   }
 
   // Adds a chain of windows (already trimmed) to the list of half-edge h, and schedules the list
-  // when it lies in the swept region (or when every list is being flushed); otherwise it waits. The order of windows in a list does not matter: they are
-  // sorted when the list is propagated.
+  // when it lies in the swept region (or when every list is being flushed); otherwise it
+  // waits. The order of windows in a list does not matter: they are sorted when the list is
+  // propagated.
   void add_chain(int h, const Window_chain& chain)
   {
     chain.tail->next = m_head[h];
