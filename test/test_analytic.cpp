@@ -2,7 +2,9 @@
 // Exact distances on developable and simple polyhedral surfaces, where the geodesic distance is
 // known in closed form: planar grids, an open cylinder, cones, a cube and a tetrahedron.
 
-#include "test_support.h"
+#include "support/analytic_surfaces.h"
+#include "support/checks.h"
+#include "support/solve.h"
 
 #include <cmath>
 #include <string>

@@ -2,7 +2,9 @@
 // Named parameters and mesh types: max_distance, stop_vertices, statistics, vertex_point_map,
 // vertex/face index maps, algorithm; several connected components; CGAL::Polyhedron_3.
 
-#include "test_support.h"
+#include "support/checks.h"
+#include "support/mesh_transformations.h"
+#include "support/solve.h"
 
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/Polyhedron_items_with_id_3.h>
@@ -14,7 +16,9 @@
 #include <boost/property_map/property_map.hpp>
 
 #include <algorithm>
+#include <fstream>
 #include <iterator>
+#include <map>
 #include <string>
 #include <unordered_map>
 #include <vector>

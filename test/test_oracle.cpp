@@ -8,7 +8,10 @@
 // Dijkstra over Steiner points finds shorter surface paths, converging to our 27.3131 (40 points
 // per edge: 27.431, 80: 27.339, 120: 27.325). These meshes get the oracle-free checks at the end.
 
-#include "test_support.h"
+#include "support/checks.h"
+#include "support/mesh_transformations.h"
+#include "support/oracle.h"
+#include "support/solve.h"
 
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 

@@ -1,8 +1,9 @@
 // Parallel (PVTP) and approximate (AVTP, PAVTP) propagation: the same distances for every
 // thread count and batch size, exactness of PVTP, the limits and bounds of the approximation.
 // This file is also built under ThreadSanitizer (test_parallel_tsan).
-#define CGAL_EXT_TEST_NO_ORACLE
-#include "test_support.h"
+#include "support/checks.h"
+#include "support/path_checks.h"
+#include "support/solve.h"
 
 #include <CGAL_ext/Surface_mesh_geodesic_paths.h>
 #include <CGAL_ext/Geodesics_3/internal/Parallel_loop.h>
@@ -11,6 +12,7 @@
 
 #include <chrono>
 #include <numeric>
+#include <random>
 #include <stdexcept>
 #include <thread>
 

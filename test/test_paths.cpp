@@ -9,12 +9,18 @@
 // path. Paths are compared with the oracle's polyline point by point (1e-6 of the diagonal); a
 // target with two shortest paths may get either, so only a fraction of them is required to be
 // close, while the lengths must always agree. The oracle is wrong at some points of border edges
-// (see Oracle_paths in test_support.h): there the reference is VTP at a vertex inserted at the
+// (see Oracle_paths in support/oracle.h): there the reference is VTP at a vertex inserted at the
 // point. Section 4 (PMMP: bit-identical distances and paths for every number of threads) is in
 // test_parallel.cpp, which is also run under ThreadSanitizer.
 
-#include "test_support.h"
+#include "support/analytic_surfaces.h"
+#include "support/checks.h"
+#include "support/mesh_transformations.h"
+#include "support/oracle.h"
+#include "support/path_checks.h"
+#include "support/solve.h"
 
+#include <CGAL_ext/Geodesics_3/polyline_length.h>
 #include <CGAL_ext/Surface_mesh_geodesic_paths.h>
 
 #include <algorithm>
@@ -341,7 +347,7 @@ TEST_P(Without_oracle, MatchVtpAndPathsHaveTheirLength)
     std::vector<Path_point> path;
     fwp->shortest_path_surface_points(v, std::back_inserter(path));
     ASSERT_TRUE(is_valid_path(m, path)) << name << ", vertex " << v;
-    const double d = fwp->distance(v), length = polyline_length(positions(path));
+    const double d = fwp->distance(v), length = CGAL_ext::polyline_length(positions(path));
     EXPECT_LE(std::abs(length - d), length_tolerance * d) << name << ", vertex " << v;
     worst = std::max(worst, std::abs(length - d) / d);
   }
@@ -700,7 +706,7 @@ void check_path(const Mesh& m, const Source_set& s, const P& paths, const Target
   for(std::size_t i = 1; i + 1 < surface.size(); ++i)
     stats.vertices_passed += surface[i].kind == Point_of_path::VERTEX;
 
-  const double length = polyline_length(points);
+  const double length = CGAL_ext::polyline_length(points);
   const double length_error = d > 0 ? std::abs(length - d) / d : length;
   EXPECT_LE(length_error, length_tolerance) << where << ": length " << length << ", distance " << d;
   stats.worst_length = std::max(stats.worst_length, length_error);
@@ -714,7 +720,7 @@ void check_path(const Mesh& m, const Source_set& s, const P& paths, const Target
   }
   const std::vector<Point> theirs = reference.path(target);
   ASSERT_FALSE(theirs.empty()) << where << ": the oracle has no path";
-  const double their_length = polyline_length(theirs);
+  const double their_length = CGAL_ext::polyline_length(theirs);
   const double oracle_length_error = length > 0 ? std::abs(length - their_length) / length : their_length;
   EXPECT_LE(oracle_length_error, length_tolerance) << where << ": length " << length << ", oracle's " << their_length;
   stats.worst_oracle_length = std::max(stats.worst_oracle_length, oracle_length_error);
@@ -840,7 +846,7 @@ TEST_P(Inserted_vertex_reference, BorderEdgesAndNearlyCorners)
     }();
     ASSERT_TRUE(is_valid_path(m, path)) << name << ", " << describe_target(t);
     EXPECT_TRUE(ends_at_target(m, t, path.back())) << name << ", " << describe_target(t);
-    EXPECT_LE(std::abs(polyline_length(positions(path)) - d), length_tolerance * d) << name << ", " << describe_target(t);
+    EXPECT_LE(std::abs(CGAL_ext::polyline_length(positions(path)) - d), length_tolerance * d) << name << ", " << describe_target(t);
   }
   std::cout << "[ error    ] " << name << ": " << reachable << " points of border edges and near corners and edges: max "
             << "|ours - exact| / diag = " << worst << " (below the exact distance by up to " << worst_below
@@ -923,7 +929,7 @@ TEST_P(Flat_grid, StraightPathsAndEuclideanDistances)
       const double e = exact > 0 ? std::abs(d - exact) / exact : d;
       EXPECT_LE(e, analytic_tolerance) << c.name << ", " << what << ": " << d << ", exact " << exact;
       worst_distance = std::max(worst_distance, e);
-      const double length = polyline_length(path);
+      const double length = CGAL_ext::polyline_length(path);
       const double el = exact > 0 ? std::abs(length - exact) / exact : length;
       EXPECT_LE(el, length_tolerance) << c.name << ", " << what << ": path length " << length << ", exact " << exact;
       worst_length = std::max(worst_length, el);
@@ -1000,7 +1006,7 @@ TEST(Paths_analytic, AroundTheReflexCornerOfAnL)
     EXPECT_NEAR(p.distance(v), exact, analytic_tolerance * exact) << "vertex " << v;
     const std::vector<Path_point> path = surface_path(p, v);
     ASSERT_TRUE(is_valid_path(m, path)) << "vertex " << v;
-    EXPECT_NEAR(polyline_length(positions(path)), exact, length_tolerance * exact) << "vertex " << v;
+    EXPECT_NEAR(CGAL_ext::polyline_length(positions(path)), exact, length_tolerance * exact) << "vertex " << v;
     if(!blocked)
       continue;
     ++hidden;
@@ -1059,14 +1065,14 @@ TEST(Paths_analytic, CylinderUnrolled)
       EXPECT_NEAR(p.distance(v), exact, analytic_tolerance * exact) << "vertex " << v;
       const std::vector<Path_point> path = surface_path(p, v);
       ASSERT_TRUE(is_valid_path(m, path)) << "vertex " << v;
-      EXPECT_NEAR(polyline_length(positions(path)), exact, length_tolerance * exact) << "vertex " << v;
+      EXPECT_NEAR(CGAL_ext::polyline_length(positions(path)), exact, length_tolerance * exact) << "vertex " << v;
     }
     for(const Face_location& l : face_targets(m, 120, 13)) {
       const double exact = unrolled(get(dev, source), developed(l));
       EXPECT_NEAR(p.distance(l), exact, analytic_tolerance * exact) << describe_target(l);
       const std::vector<Path_point> path = surface_path(p, l);
       ASSERT_TRUE(is_valid_path(m, path)) << describe_target(l);
-      EXPECT_NEAR(polyline_length(positions(path)), exact, length_tolerance * exact) << describe_target(l);
+      EXPECT_NEAR(CGAL_ext::polyline_length(positions(path)), exact, length_tolerance * exact) << describe_target(l);
     }
   }
 }
@@ -1099,7 +1105,7 @@ TEST(Paths_analytic, ConeDeveloped)
     EXPECT_NEAR(p.distance(v), exact, analytic_tolerance * exact) << "vertex " << v;
     const std::vector<Path_point> path = surface_path(p, v);
     ASSERT_TRUE(is_valid_path(m, path)) << "vertex " << v; // (it never passes the apex)
-    EXPECT_NEAR(polyline_length(positions(path)), exact, length_tolerance * exact) << "vertex " << v;
+    EXPECT_NEAR(CGAL_ext::polyline_length(positions(path)), exact, length_tolerance * exact) << "vertex " << v;
   }
   Paths from_apex(m);
   from_apex.add_source(Vertex(0));
@@ -1109,7 +1115,7 @@ TEST(Paths_analytic, ConeDeveloped)
     bool monotone = false;
     EXPECT_LE(off_segment(path, m.point(Vertex(0)), m.point(v), monotone, 1e-12), 1e-12) << "vertex " << v;
     EXPECT_TRUE(monotone) << "vertex " << v;
-    EXPECT_NEAR(polyline_length(path), distance_3(m.point(Vertex(0)), m.point(v)), 1e-12) << "vertex " << v;
+    EXPECT_NEAR(CGAL_ext::polyline_length(path), distance_3(m.point(Vertex(0)), m.point(v)), 1e-12) << "vertex " << v;
   }
 }
 
@@ -1127,7 +1133,7 @@ TEST(Paths_analytic, CubeFromACorner)
     const Point& q = m.point(v);
     const std::vector<Path_point> path = surface_path(p, v);
     ASSERT_TRUE(is_valid_path(m, path)) << "vertex " << v;
-    EXPECT_NEAR(polyline_length(positions(path)), p.distance(v), 1e-12 * p.distance(v)) << "vertex " << v;
+    EXPECT_NEAR(CGAL_ext::polyline_length(positions(path)), p.distance(v), 1e-12 * p.distance(v)) << "vertex " << v;
     const int at_side = (q.x() == side) + (q.y() == side) + (q.z() == side);
     const int at_zero = (q.x() == 0) + (q.y() == 0) + (q.z() == 0);
     if(at_side + at_zero != 3)
@@ -1405,7 +1411,7 @@ TEST_F(Paths_max_distance, DistancesAndPaths)
       EXPECT_NEAR(fwp->distance(t), d, band) << describe_target(t);
       EXPECT_NEAR(mmp->distance(t), d, band) << describe_target(t);
       ASSERT_TRUE(is_valid_path(m, path)) << describe_target(t);
-      EXPECT_NEAR(polyline_length(positions(path)), d, length_tolerance * d) << describe_target(t);
+      EXPECT_NEAR(CGAL_ext::polyline_length(positions(path)), d, length_tolerance * d) << describe_target(t);
       EXPECT_EQ(fwp->nearest_source(t), full->nearest_source(t)) << describe_target(t);
     } else if(d > radius + band) {
       EXPECT_EQ(fwp->distance(t), inf) << describe_target(t);
