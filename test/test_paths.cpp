@@ -26,6 +26,7 @@
 #include <algorithm>
 #include <cctype>
 #include <memory>
+#include <optional>
 #include <random>
 #include <string>
 #include <thread>
@@ -42,7 +43,6 @@ typedef CGAL_ext::Surface_mesh_geodesic_paths<Mesh, CGAL::Parallel_tag> Parallel
 typedef Paths::Path_point Path_point;
 typedef Mesh::Halfedge_index Halfedge;
 
-const double pi = 3.14159265358979323846;
 const double oracle_tolerance = 1e-9; // max |ours - oracle| / diagonal
 const double vtp_tolerance = 1e-12;   // max |ours - VTP| / diagonal
 const double length_tolerance = 1e-9; // |path length - distance| / distance
@@ -980,7 +980,9 @@ TEST(Paths_analytic, AroundTheReflexCornerOfAnL)
   const int n = 21;
   const double h = 0.1;
   const Mesh m = make_grid(n, h, 0, true);
-  const Point corner(1.0, 1.0, 0); // the grid point ((n - 1) / 2, (n - 1) / 2)
+  const L_shape l_shape = grid_l_shape(n, h);
+  const Point corner(l_shape.corner.x(), l_shape.corner.y(), 0); // (1, 1)
+  auto planar = [](const Point& p) { return Point_2(p.x(), p.y()); };
   Vertex source, corner_vertex;
   for(Vertex v : m.vertices()) {
     if(distance_3(m.point(v), Point(0.2, 1.8, 0)) < 1e-9)
@@ -996,13 +998,8 @@ TEST(Paths_analytic, AroundTheReflexCornerOfAnL)
   std::size_t hidden = 0;
   for(Vertex v : m.vertices()) {
     const Point to = m.point(v);
-    // hidden: the segment crosses the removed quadrant x > 1, y > 1 (the source is at x < 1)
-    bool blocked = false;
-    if(to.x() > 1 + 1e-9) {
-      const double t = (1 - from.x()) / (to.x() - from.x()); // where x = 1
-      blocked = from.y() + t * (to.y() - from.y()) > 1 + 1e-9;
-    }
-    const double exact = blocked ? distance_3(from, corner) + distance_3(corner, to) : distance_3(from, to);
+    const bool blocked = l_shape.hides(planar(from), planar(to));
+    const double exact = l_shape.distance(planar(from), planar(to));
     EXPECT_NEAR(p.distance(v), exact, analytic_tolerance * exact) << "vertex " << v;
     const std::vector<Path_point> path = surface_path(p, v);
     ASSERT_TRUE(is_valid_path(m, path)) << "vertex " << v;
@@ -1025,50 +1022,29 @@ TEST(Paths_analytic, AroundTheReflexCornerOfAnL)
 }
 
 // The open cylinder develops into a periodic strip: the distance between developed points is
-// the smallest over the copies shifted by the strip's width.
+// the smallest over the copies shifted by the strip's width (Strip::distance).
 TEST(Paths_analytic, CylinderUnrolled)
 {
   const double r = 1.5, height = 4;
   const int segments = 24, rows = 10;
   const Mesh m = make_cylinder(r, segments, height, rows);
-  const double width = segments * 2 * r * std::sin(pi / segments);
+  const Strip strip = cylinder_strip(r, segments);
   const auto dev = developed_map(m);
   const Vertex source(static_cast<Mesh::size_type>((rows / 2) * segments + segments / 3));
-  auto unrolled = [&](const Point_2& a, const Point_2& b) {
-    double best = inf;
-    for(int shift = -1; shift <= 1; ++shift)
-      best = std::min(best, std::hypot(b.x() - a.x() + shift * width, b.y() - a.y()));
-    return best;
-  };
-  // a face location's developed position, its corners unwrapped next to the first one
-  auto developed = [&](const Face_location& l) {
-    const auto c = face_corners(m, l.first);
-    const Point_2 p0 = get(dev, c[0]);
-    double x = l.second[0] * p0.x(), y = l.second[0] * p0.y();
-    for(int k = 1; k < 3; ++k) {
-      Point_2 q = get(dev, c[k]);
-      if(q.x() - p0.x() > width / 2)
-        q = Point_2(q.x() - width, q.y());
-      else if(p0.x() - q.x() > width / 2)
-        q = Point_2(q.x() + width, q.y());
-      x += l.second[k] * q.x();
-      y += l.second[k] * q.y();
-    }
-    return Point_2(x, y);
-  };
+  auto unwrap = [&](const Point_2& ref, const Point_2& q) { return strip.unwrapped(ref, q); };
   for(int a = 0; a < 2; ++a) {
     Paths p(m);
     p.add_source(source);
     p.build(params::algorithm(a == 0 ? CGAL_ext::MMP : CGAL_ext::FWP_MMP));
     for(Vertex v : m.vertices()) {
-      const double exact = unrolled(get(dev, source), get(dev, v));
+      const double exact = strip.distance(get(dev, source), get(dev, v));
       EXPECT_NEAR(p.distance(v), exact, analytic_tolerance * exact) << "vertex " << v;
       const std::vector<Path_point> path = surface_path(p, v);
       ASSERT_TRUE(is_valid_path(m, path)) << "vertex " << v;
       EXPECT_NEAR(CGAL_ext::polyline_length(positions(path)), exact, length_tolerance * exact) << "vertex " << v;
     }
     for(const Face_location& l : face_targets(m, 120, 13)) {
-      const double exact = unrolled(get(dev, source), developed(l));
+      const double exact = strip.distance(get(dev, source), developed_location(m, l, unwrap));
       EXPECT_NEAR(p.distance(l), exact, analytic_tolerance * exact) << describe_target(l);
       const std::vector<Path_point> path = surface_path(p, l);
       ASSERT_TRUE(is_valid_path(m, path)) << describe_target(l);
@@ -1078,30 +1054,21 @@ TEST(Paths_analytic, CylinderUnrolled)
 }
 
 // The cone develops into a sector of angle theta < pi: between two points the distance is the
-// planar one across the smaller angular gap. Its apex is not a saddle: no path passes it. From
-// the apex, every path runs straight down a generator.
+// planar one across the smaller angular gap (Sector::distance). Its apex is not a saddle: no
+// path passes it. From the apex, every path runs straight down a generator.
 TEST(Paths_analytic, ConeDeveloped)
 {
   const int segments = 32, rings = 10;
-  double theta = 0;
-  const Mesh m = make_cone(1, 4, segments, rings, &theta);
-  ASSERT_LT(theta, pi);
+  const Mesh m = make_cone(1, 4, segments, rings);
+  const Sector sector = cone_sector(1, 4, segments);
+  ASSERT_LT(sector.angle, pi);
   const auto dev = developed_map(m);
-  auto polar_angle = [](const Point_2& p) { return std::atan2(p.y(), p.x()); };
-  auto developed_distance = [&](const Point_2& p, const Point_2& q) {
-    const double r1 = std::hypot(p.x(), p.y()), r2 = std::hypot(q.x(), q.y());
-    if(r1 == 0 || r2 == 0)
-      return r1 + r2;
-    double gap = std::fmod(std::abs(polar_angle(p) - polar_angle(q)), theta);
-    gap = std::min(gap, theta - gap);
-    return std::sqrt(std::max(0., r1 * r1 + r2 * r2 - 2 * r1 * r2 * std::cos(gap)));
-  };
   const Vertex rim(static_cast<Mesh::size_type>(1 + (rings - 1) * segments + segments / 4));
   Paths p(m);
   p.add_source(rim);
   p.build();
   for(Vertex v : m.vertices()) {
-    const double exact = developed_distance(get(dev, rim), get(dev, v));
+    const double exact = sector.distance(get(dev, rim), get(dev, v));
     EXPECT_NEAR(p.distance(v), exact, analytic_tolerance * exact) << "vertex " << v;
     const std::vector<Path_point> path = surface_path(p, v);
     ASSERT_TRUE(is_valid_path(m, path)) << "vertex " << v; // (it never passes the apex)
@@ -1134,13 +1101,8 @@ TEST(Paths_analytic, CubeFromACorner)
     const std::vector<Path_point> path = surface_path(p, v);
     ASSERT_TRUE(is_valid_path(m, path)) << "vertex " << v;
     EXPECT_NEAR(CGAL_ext::polyline_length(positions(path)), p.distance(v), 1e-12 * p.distance(v)) << "vertex " << v;
-    const int at_side = (q.x() == side) + (q.y() == side) + (q.z() == side);
-    const int at_zero = (q.x() == 0) + (q.y() == 0) + (q.z() == 0);
-    if(at_side + at_zero != 3)
-      continue;
-    const double exact =
-      at_side == 0 ? 0 : at_side == 1 ? side : at_side == 2 ? side * std::sqrt(2.) : side * std::sqrt(5.);
-    EXPECT_NEAR(p.distance(v), exact, 1e-12 * side) << "corner " << q;
+    if(const std::optional<double> exact = cube_corner_distance(q, side))
+      EXPECT_NEAR(p.distance(v), *exact, 1e-12 * side) << "corner " << q;
   }
 }
 

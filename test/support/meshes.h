@@ -35,6 +35,7 @@ typedef std::pair<Face, Barycentric> Face_location;
 typedef std::array<int, 3> Triangle;
 
 const double inf = std::numeric_limits<double>::infinity();
+const double pi = 3.14159265358979323846;
 
 // ---------------------------------------------------------------------------------------------
 // Meshes read from files

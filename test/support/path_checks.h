@@ -35,7 +35,7 @@ inline double angle_sum(const Mesh& m, Vertex v)
 /// 2 pi, up to the 1e-6 the solvers also use)
 inline bool is_saddle_or_border(const Mesh& m, Vertex v)
 {
-  return m.is_border(v) || angle_sum(m, v) > 2 * 3.14159265358979323846 - 1e-6;
+  return m.is_border(v) || angle_sum(m, v) > 2 * pi - 1e-6;
 }
 
 /// the distance from p to the polyline (to its only point if it has one, +infinity if empty)
