@@ -15,19 +15,11 @@ using namespace test_support;
 
 namespace {
 
-// Sources: vertices, and face locations whose developed position is the barycentric
-// combination of the developed corners.
-struct Source
-{
-  std::vector<Vertex> vertices;
-  std::vector<Face_location> faces;
-};
-
 // The exact distance field: the minimum over the sources of `distance(source position, vertex
 // position)` in the development, where a face-location source is at the barycentric combination
 // of its developed corners (unwrapped across the seam of a periodic development).
 template <class Distance, class Unwrap>
-std::vector<double> exact_field(const Mesh& m, const Source& s, Distance distance, Unwrap unwrap)
+std::vector<double> exact_field(const Mesh& m, const Sources& s, Distance distance, Unwrap unwrap)
 {
   const auto dev = developed_map(m);
   std::vector<Point_2> from;
@@ -44,7 +36,7 @@ std::vector<double> exact_field(const Mesh& m, const Source& s, Distance distanc
 
 auto no_unwrap = [](const Point_2&, const Point_2& q) { return q; };
 
-std::vector<double> solve_sources(const Mesh& m, const Source& s) { return solve_mixed(m, s.vertices, s.faces); }
+std::vector<double> solve_sources(const Mesh& m, const Sources& s) { return solve_mixed(m, s.vertices, s.faces); }
 
 // ---------------------------------------------------------------------------------------------
 // Planar grids: the geodesic distance is the Euclidean one in a convex domain; in the L-shaped
@@ -85,7 +77,7 @@ TEST_P(Planar, EuclideanDistance)
       interior = v;
   }
   ASSERT_TRUE(interior.is_valid());
-  Source s;
+  Sources s;
   switch(c.source) {
   case 0: s.vertices = {interior}; break;
   case 1: s.vertices = {grid_corner}; break;
@@ -136,7 +128,7 @@ TEST_P(Cylinder, UnrolledStripDistance)
   const Mesh m = make_cylinder(r, c.segments, height, c.rows);
   const Strip strip = cylinder_strip(r, c.segments);
   const std::size_t nf = m.number_of_faces();
-  Source s;
+  Sources s;
   const Vertex middle(static_cast<Mesh::size_type>((c.rows / 2) * c.segments + c.segments / 3));
   switch(c.source) {
   case 0: s.vertices = {Vertex(0)}; break;
@@ -189,7 +181,7 @@ TEST_P(Cone, DevelopedSectorDistance)
     ASSERT_LT(sector.angle, pi) << "the closed form needs a sector narrower than pi";
   auto vertex = [&](int k, int j) { return Vertex(static_cast<Mesh::size_type>(1 + (j - 1) * c.segments + k)); };
   const std::size_t nf = m.number_of_faces();
-  Source s;
+  Sources s;
   switch(c.source) {
   case 0: s.vertices = {Vertex(0)}; break;
   case 1: s.vertices = {vertex(c.segments / 4, c.rings)}; break;

@@ -325,8 +325,7 @@ template <class P>
 P read_polyhedron(const std::string& name)
 {
   P p;
-  const std::string path = (name == "elephant" || name == "mushroom") ? std::string(CGAL_EXT_DATA_DIR) + "/" + name + ".off"
-                                                                       : std::string(CGAL_EXT_CGAL_MESHES) + "/" + name + ".off";
+  const std::string path = test_mesh_path(name);
   std::ifstream in(path);
   if(!CGAL::IO::read_OFF(in, p))
     throw std::runtime_error("cannot read " + path);

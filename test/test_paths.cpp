@@ -24,7 +24,6 @@
 #include <CGAL_ext/Surface_mesh_geodesic_paths.h>
 
 #include <algorithm>
-#include <cctype>
 #include <memory>
 #include <optional>
 #include <random>
@@ -49,14 +48,6 @@ const double length_tolerance = 1e-9; // |path length - distance| / distance
 const double close_tolerance = 1e-6;  // a point of our path to the oracle's polyline / diagonal
 const double close_fraction = 0.95;   // of the paths, at least this many close to the oracle's
 
-std::string test_name(std::string n)
-{
-  for(char& c : n)
-    if(!std::isalnum(static_cast<unsigned char>(c)))
-      c = '_';
-  return n;
-}
-
 // ---------------------------------------------------------------------------------------------
 // Sources: vertices first, then face locations; source i of a set is the i-th in that order,
 // which is the order they are added to the class (so nearest_source() returns that index).
@@ -64,18 +55,10 @@ std::string test_name(std::string n)
 enum Source_kind { VERTEX_SOURCE, FACE_SOURCE, EDGE_SOURCE, SEVERAL_SOURCES, BORDER_SOURCES, NEAR_VERTEX_SOURCE };
 const char* source_names[] = {"vertex", "face", "edge", "several", "border", "near_vertex"};
 
-struct Source_set
-{
-  std::vector<Vertex> vertices;
-  std::vector<Face_location> faces;
-
-  std::size_t size() const { return vertices.size() + faces.size(); }
-};
-
-Source_set make_sources(const Mesh& m, Source_kind kind)
+Sources make_sources(const Mesh& m, Source_kind kind)
 {
   const std::size_t nf = m.number_of_faces();
-  Source_set s;
+  Sources s;
   switch(kind) {
   case VERTEX_SOURCE: s.vertices = spread_vertices(m, 1, m.number_of_vertices() / 3); break;
   case FACE_SOURCE: s.faces = {location(nf / 2, 0.2, 0.3)}; break;
@@ -107,7 +90,7 @@ Source_set make_sources(const Mesh& m, Source_kind kind)
 
 /// the paths object of type P for the sources, built with `np`
 template <class P, class NamedParameters = CGAL_ext::parameters::Default_named_parameters_type>
-std::unique_ptr<P> built(const Mesh& m, const Source_set& s,
+std::unique_ptr<P> built(const Mesh& m, const Sources& s,
                          const NamedParameters& np = CGAL_ext::parameters::default_values())
 {
   std::unique_ptr<P> p(new P(m));
@@ -119,24 +102,8 @@ std::unique_ptr<P> built(const Mesh& m, const Source_set& s,
   return p;
 }
 
-/// geodesic_distances() from the sources (vertices given as corner locations when face
-/// locations are mixed in, as solve_mixed does)
-template <class ConcurrencyTag = CGAL::Sequential_tag,
-          class NamedParameters = CGAL_ext::parameters::Default_named_parameters_type>
-std::vector<double> solve_sources(const Mesh& m, const Source_set& s,
-                                  const NamedParameters& np = CGAL_ext::parameters::default_values())
-{
-  if(s.faces.empty())
-    return solve<ConcurrencyTag>(m, s.vertices, np);
-  std::vector<Face_location> all;
-  for(Vertex v : s.vertices)
-    all.push_back(corner_location(m, v));
-  all.insert(all.end(), s.faces.begin(), s.faces.end());
-  return solve<ConcurrencyTag>(m, all, np);
-}
-
 /// VTP from each source alone
-std::vector<std::vector<double>> per_source_distances(const Mesh& m, const Source_set& s)
+std::vector<std::vector<double>> per_source_distances(const Mesh& m, const Sources& s)
 {
   std::vector<std::vector<double>> d;
   for(Vertex v : s.vertices)
@@ -188,21 +155,21 @@ template <class P>
 
 // Every algorithm, through geodesic_distances() and through the class, against the oracle and
 // VTP; nearest sources against VTP from each source alone.
-void check_vertex_distances(const Mesh& m, const Source_set& s, const std::string& label)
+void check_vertex_distances(const Mesh& m, const Sources& s, const std::string& label)
 {
   const double diag = bbox_diagonal(m);
   const std::vector<double> reference = oracle(m, s.vertices, s.faces);
-  const std::vector<double> vtp = solve_sources(m, s);
+  const std::vector<double> vtp = solve_mixed(m, s.vertices, s.faces);
   ASSERT_TRUE(agrees(vtp, reference, diag, oracle_tolerance, label + " VTP (the reference's check)"));
 
   auto mmp = built<Paths>(m, s, params::algorithm(CGAL_ext::MMP));
   auto fwp = built<Paths>(m, s); // FWP-MMP, the default
   auto pmmp = built<Parallel_paths>(m, s, params::number_of_threads(2));
   const std::vector<std::pair<std::string, std::vector<double>>> runs = {
-    {"geodesic_distances MMP", solve_sources(m, s, params::algorithm(CGAL_ext::MMP))},
-    {"geodesic_distances FWP-MMP", solve_sources(m, s, params::algorithm(CGAL_ext::FWP_MMP))},
-    {"geodesic_distances PMMP",
-     solve_sources<CGAL::Parallel_tag>(m, s, params::algorithm(CGAL_ext::FWP_MMP).number_of_threads(2))},
+    {"geodesic_distances MMP", solve_mixed(m, s.vertices, s.faces, params::algorithm(CGAL_ext::MMP))},
+    {"geodesic_distances FWP-MMP", solve_mixed(m, s.vertices, s.faces, params::algorithm(CGAL_ext::FWP_MMP))},
+    {"geodesic_distances PMMP", solve_mixed<CGAL::Parallel_tag>(
+                                  m, s.vertices, s.faces, params::algorithm(CGAL_ext::FWP_MMP).number_of_threads(2))},
     {"class MMP", class_distances(m, *mmp)},
     {"class FWP-MMP", class_distances(m, *fwp)},
     {"class PMMP", class_distances(m, *pmmp)}};
@@ -256,13 +223,13 @@ std::vector<Mesh_and_sources> mesh_and_sources_cases()
 // ---------------------------------------------------------------------------------------------
 // 1. Vertex distances on CGAL's meshes and on transformed copies
 
-class Vertex_distances : public ::testing::TestWithParam<std::tuple<const char*, Source_kind>> {};
+class Vertex_distances : public ::testing::TestWithParam<Mesh_and_sources> {};
 
 TEST_P(Vertex_distances, MatchOracleAndVtp)
 {
   const std::string name = std::get<0>(GetParam());
   const Mesh& m = test_mesh(name);
-  const Source_set s = make_sources(m, std::get<1>(GetParam()));
+  const Sources s = make_sources(m, std::get<1>(GetParam()));
   check_vertex_distances(m, s, name + " " + source_names[std::get<1>(GetParam())]);
   if(name == "blobby_3cc") { // three components: the other two are unreachable from one source
     auto fwp = built<Paths>(m, s);
@@ -281,32 +248,14 @@ INSTANTIATE_TEST_SUITE_P(Paths, Vertex_distances, ::testing::ValuesIn(mesh_and_s
 INSTANTIATE_TEST_SUITE_P(PathsLarger, Vertex_distances,
                          ::testing::Values(std::make_tuple("fandisk", SEVERAL_SOURCES),
                                            std::make_tuple("man", SEVERAL_SOURCES)),
-                         [](const ::testing::TestParamInfo<std::tuple<const char*, Source_kind>>& i) {
-                           return test_name(std::string(std::get<0>(i.param)) + "_" +
-                                            source_names[std::get<1>(i.param)]);
-                         });
-
-enum Transform { SCALED_DOWN, SCALED_UP, LOOP_SUBDIVIDED, JITTERED, CUT_OPEN };
-const char* transform_names[] = {"scaled_1e-3", "scaled_1e3", "loop_subdivided", "jittered", "cut_open"};
-
-Mesh transformed(const std::string& name, Transform t)
-{
-  const Mesh& m = test_mesh(name);
-  switch(t) {
-  case SCALED_DOWN: return scaled(m, 1e-3);
-  case SCALED_UP: return scaled(m, 1e3);
-  case LOOP_SUBDIVIDED: return loop_subdivided(m);
-  case JITTERED: return jittered(m, 1e-3);
-  default: return cut_open(m, 6);
-  }
-}
+                         mesh_and_sources_name);
 
 class Transformed_distances : public ::testing::TestWithParam<std::tuple<const char*, Transform>> {};
 
 TEST_P(Transformed_distances, MatchOracleAndVtp)
 {
   const std::string name = std::get<0>(GetParam());
-  const Mesh m = transformed(name, std::get<1>(GetParam()));
+  const Mesh m = transformed(test_mesh(name), std::get<1>(GetParam()));
   check_vertex_distances(m, make_sources(m, SEVERAL_SOURCES), name + " " + transform_names[std::get<1>(GetParam())]);
 }
 
@@ -332,15 +281,15 @@ TEST_P(Without_oracle, MatchVtpAndPathsHaveTheirLength)
   const std::string name = GetParam();
   const Mesh& m = test_mesh(name);
   const double diag = bbox_diagonal(m);
-  Source_set s;
+  Sources s;
   s.vertices = {Vertex(168)};
   s.faces = {location(m.number_of_faces() / 2, 0.3, 0.3)};
-  const std::vector<double> vtp = solve_sources(m, s);
+  const std::vector<double> vtp = solve_mixed(m, s.vertices, s.faces);
   auto fwp = built<Paths>(m, s);
   auto pmmp = built<Parallel_paths>(m, s, params::number_of_threads(2));
   EXPECT_TRUE(agrees(class_distances(m, *fwp), vtp, diag, vtp_tolerance, name + " class FWP-MMP vs VTP"));
   EXPECT_TRUE(agrees(class_distances(m, *pmmp), vtp, diag, vtp_tolerance, name + " class PMMP vs VTP"));
-  EXPECT_TRUE(agrees(solve_sources(m, s, params::algorithm(CGAL_ext::MMP)), vtp, diag, vtp_tolerance,
+  EXPECT_TRUE(agrees(solve_mixed(m, s.vertices, s.faces, params::algorithm(CGAL_ext::MMP)), vtp, diag, vtp_tolerance,
                      name + " geodesic_distances MMP vs VTP"));
   double worst = 0;
   for(Vertex v : spread_vertices(m, 40, 9)) {
@@ -426,8 +375,6 @@ Face_location across(const Mesh& m, const Face_location& l)
   throw std::logic_error("across: not on an edge");
 }
 
-int zeros(const Barycentric& b) { return (b[0] == 0) + (b[1] == 0) + (b[2] == 0); }
-
 std::string describe_target(Vertex v)
 {
   return "vertex " + std::to_string(v.idx());
@@ -443,7 +390,7 @@ std::string describe_target(const Face_location& l)
 // ---------------------------------------------------------------------------------------------
 // 2. Distances at face points (inside faces, on edges, at corners) against the oracle
 
-class Face_point_distances : public ::testing::TestWithParam<std::tuple<const char*, Source_kind>> {};
+class Face_point_distances : public ::testing::TestWithParam<Mesh_and_sources> {};
 
 TEST_P(Face_point_distances, MatchOracle)
 {
@@ -452,7 +399,7 @@ TEST_P(Face_point_distances, MatchOracle)
   const std::string label = name + " " + source_names[kind];
   const Mesh& m = test_mesh(name);
   const double diag = bbox_diagonal(m);
-  const Source_set s = make_sources(m, kind);
+  const Sources s = make_sources(m, kind);
   Oracle_paths reference(m, s.vertices, s.faces);
   auto mmp = built<Paths>(m, s, params::algorithm(CGAL_ext::MMP));
   auto fwp = built<Paths>(m, s);
@@ -463,7 +410,7 @@ TEST_P(Face_point_distances, MatchOracle)
   std::vector<std::unique_ptr<Paths>> alone_ours;
   if(s.size() > 1) {
     for(std::size_t i = 0; i < s.size(); ++i) {
-      Source_set one;
+      Sources one;
       if(i < s.vertices.size())
         one.vertices = {s.vertices[i]};
       else
@@ -496,14 +443,14 @@ TEST_P(Face_point_distances, MatchOracle)
                       << d[a] << ", reference " << o;
       worst[a] = std::max(worst[a], e / diag);
     }
-    if(zeros(t.second) == 2) { // a corner is the vertex
+    if(zero_coordinates(t.second) == 2) { // a corner is the vertex
       const auto c = face_corners(m, t.first);
       for(int k = 0; k < 3; ++k)
         if(t.second[k] == 1) {
           EXPECT_EQ(max_difference({d[1]}, {fwp->distance(c[k])}), 0.) << label << ", corner of face " << t.first;
         }
     }
-    if(zeros(t.second) == 1 && !on_border_edge(m, t)) { // the same edge point seen from the face across
+    if(zero_coordinates(t.second) == 1 && !on_border_edge(m, t)) { // the same edge point seen from the face across
       const Face_location other = across(m, t);
       ++on_edges;
       EXPECT_LE(max_difference({fwp->distance(other)}, {d[1]}), vtp_tolerance * diag)
@@ -598,72 +545,13 @@ struct Path_statistics
 };
 
 
-/// The first point of a path is source i of the set, exactly.
-template <class Path_point>
-::testing::AssertionResult starts_at_source(const Mesh& m, const Source_set& s, std::size_t i, const Path_point& p)
-{
-  if(i < s.vertices.size()) {
-    const Vertex v = s.vertices[i];
-    if(p.kind != Path_point::VERTEX || p.vertex != v || p.point != m.point(v))
-      return ::testing::AssertionFailure() << "the path does not start at source vertex " << v << " (kind "
-                                           << int(p.kind) << ", at " << p.point << ")";
-    return ::testing::AssertionSuccess();
-  }
-  const Face_location& l = s.faces[i - s.vertices.size()];
-  const double off = distance_3(p.point, location_point(m, l));
-  const std::vector<Face> f = faces_of(m, p);
-  if(!(off <= 1e-14 * bbox_diagonal(m)) || std::find(f.begin(), f.end(), l.first) == f.end())
-    return ::testing::AssertionFailure() << "the path starts " << off << " away from source " << i << " in face "
-                                         << l.first << " (kind " << int(p.kind) << ")";
-  return ::testing::AssertionSuccess();
-}
-
-/// The last point of a path is the target, exactly, and says where it is.
-template <class Path_point>
-::testing::AssertionResult ends_at_target(const Mesh& m, Vertex v, const Path_point& p)
-{
-  if(p.kind != Path_point::VERTEX || p.vertex != v || p.point != m.point(v))
-    return ::testing::AssertionFailure() << "the path does not end at vertex " << v;
-  return ::testing::AssertionSuccess();
-}
-template <class Path_point>
-::testing::AssertionResult ends_at_target(const Mesh& m, const Face_location& l, const Path_point& p)
-{
-  const double off = distance_3(p.point, location_point(m, l));
-  if(!(off <= 1e-14 * bbox_diagonal(m)))
-    return ::testing::AssertionFailure() << "the path ends " << off << " away from the target";
-  const auto c = face_corners(m, l.first);
-  switch(zeros(l.second)) {
-  case 0:
-    if(p.kind != Path_point::FACE || p.face != l.first)
-      return ::testing::AssertionFailure() << "a target inside face " << l.first << " ends as kind " << int(p.kind);
-    for(int k = 0; k < 3; ++k)
-      if(!(std::abs(p.barycentric[k] - l.second[k]) <= 1e-15))
-        return ::testing::AssertionFailure() << "the target's coordinate " << k << " is " << p.barycentric[k];
-    break;
-  case 1: {
-    if(p.kind != Path_point::EDGE)
-      return ::testing::AssertionFailure() << "a target on an edge ends as kind " << int(p.kind);
-    const std::vector<Face> f = faces_of(m, p);
-    if(std::find(f.begin(), f.end(), l.first) == f.end())
-      return ::testing::AssertionFailure() << "the target's edge is not an edge of face " << l.first;
-    break;
-  }
-  default:
-    for(int k = 0; k < 3; ++k)
-      if(l.second[k] == 1 && (p.kind != Path_point::VERTEX || p.vertex != c[k]))
-        return ::testing::AssertionFailure() << "a target at corner " << c[k] << " ends as kind " << int(p.kind);
-  }
-  return ::testing::AssertionSuccess();
-}
-
 /// The reference distance of a target: the oracle's, except at points of border edges where it
 /// is sometimes wrong (see Oracle_paths): there, VTP's at a vertex inserted at the point.
-double reference_distance(const Mesh&, const Source_set&, Oracle_paths& reference, Vertex v)
+double reference_distance(const Mesh&, const Sources&, Oracle_paths& reference, Vertex v)
 {
   return reference.distance(v);
 }
-double reference_distance(const Mesh& m, const Source_set& s, Oracle_paths& reference, const Face_location& l)
+double reference_distance(const Mesh& m, const Sources& s, Oracle_paths& reference, const Face_location& l)
 {
   return on_border_edge(m, l) ? distance_at_edge_point(m, s.vertices, s.faces, l) : reference.distance(l);
 }
@@ -674,7 +562,7 @@ bool oracle_path_is_unreliable(const Mesh& m, const Face_location& l) { return o
 /// valid, starts at its nearest source and ends at the target, its length is the distance; the
 /// distance and the path against the oracle's.
 template <class P, class Target>
-void check_path(const Mesh& m, const Source_set& s, const P& paths, const Target& target, Oracle_paths& reference,
+void check_path(const Mesh& m, const Sources& s, const P& paths, const Target& target, Oracle_paths& reference,
                 Path_statistics& stats, const std::string& label)
 {
   const double diag = bbox_diagonal(m);
@@ -736,14 +624,14 @@ void check_path(const Mesh& m, const Source_set& s, const P& paths, const Target
   }
 }
 
-class Shortest_paths : public ::testing::TestWithParam<std::tuple<const char*, Source_kind>> {};
+class Shortest_paths : public ::testing::TestWithParam<Mesh_and_sources> {};
 
 TEST_P(Shortest_paths, ValidAndMatchOracle)
 {
   const std::string name = std::get<0>(GetParam());
   const Source_kind kind = std::get<1>(GetParam());
   const Mesh& m = test_mesh(name);
-  const Source_set s = make_sources(m, kind);
+  const Sources s = make_sources(m, kind);
   Oracle_paths reference(m, s.vertices, s.faces);
   auto mmp = built<Paths>(m, s, params::algorithm(CGAL_ext::MMP));
   auto fwp = built<Paths>(m, s);
@@ -791,7 +679,7 @@ TEST_P(Inserted_vertex_reference, BorderEdgesAndNearlyCorners)
   const std::string name = GetParam();
   const Mesh& m = test_mesh(name);
   const double diag = bbox_diagonal(m);
-  const Source_set s{spread_vertices(m, 2, 17), {}};
+  const Sources s{spread_vertices(m, 2, 17), {}};
   auto fwp = built<Paths>(m, s);
   auto mmp = built<Paths>(m, s, params::algorithm(CGAL_ext::MMP));
   Oracle_paths reference(m, s.vertices);
@@ -826,7 +714,7 @@ TEST_P(Inserted_vertex_reference, BorderEdgesAndNearlyCorners)
   double worst = 0, worst_below = 0, worst_oracle = 0;
   std::size_t oracle_wrong = 0, reachable = 0;
   for(const Face_location& t : targets) {
-    const double exact = zeros(t.second) == 1 ? distance_at_edge_point(m, s.vertices, s.faces, t)
+    const double exact = zero_coordinates(t.second) == 1 ? distance_at_edge_point(m, s.vertices, s.faces, t)
                                               : distance_at_face_point(m, s.vertices, s.faces, t);
     const double d = fwp->distance(t), o = reference.distance(t);
     EXPECT_LE(max_difference({d}, {exact}), oracle_tolerance * diag)
@@ -912,7 +800,7 @@ TEST_P(Flat_grid, StraightPathsAndEuclideanDistances)
   const Grid_case& c = GetParam();
   const Mesh m = make_grid(21, 0.1, c.jitter);
   const double diag = bbox_diagonal(m);
-  Source_set s;
+  Sources s;
   if(c.face_source)
     s.faces = {location(301, 0.2, 0.3)};
   else
@@ -1322,7 +1210,7 @@ class Paths_max_distance : public ::testing::Test
 protected:
   const Mesh& m = test_mesh("elephant");
   const double diag = bbox_diagonal(m);
-  Source_set s;
+  Sources s;
   std::unique_ptr<Paths> full;
   double radius = 0;
 
@@ -1347,7 +1235,8 @@ protected:
 TEST_F(Paths_max_distance, DistancesAndPaths)
 {
   const double band = 1e-12 * diag;
-  const std::vector<double> function_mmp = solve_sources(m, s, params::algorithm(CGAL_ext::MMP).max_distance(radius));
+  const std::vector<double> function_mmp =
+    solve_mixed(m, s.vertices, s.faces, params::algorithm(CGAL_ext::MMP).max_distance(radius));
   std::size_t inside = 0, outside = 0;
   for(Vertex v : m.vertices()) {
     const double d = full->distance(v);
@@ -1474,7 +1363,7 @@ TEST(Paths_edge_cases, TargetAtTheSource)
 TEST(Paths_edge_cases, RefusedBuildKeepsThePreviousOneAndMovesKeepTheBuild)
 {
   const Mesh& m = test_mesh("elephant");
-  const Source_set s = make_sources(m, SEVERAL_SOURCES);
+  const Sources s = make_sources(m, SEVERAL_SOURCES);
   auto p = built<Paths>(m, s);
   const std::vector<double> before = class_distances(m, *p);
   const Face_location l = location(3000, 0.1, 0.6);
@@ -1589,7 +1478,7 @@ void check_concurrent_queries(const Mesh& m, const P& p, const std::string& labe
 TEST(Paths_threads, ConstQueriesFromSeveralThreads)
 {
   const Mesh& m = test_mesh("elephant");
-  const Source_set s = make_sources(m, SEVERAL_SOURCES);
+  const Sources s = make_sources(m, SEVERAL_SOURCES);
   check_concurrent_queries(m, *built<Paths>(m, s), "FWP-MMP");
   check_concurrent_queries(m, *built<Parallel_paths>(m, s, params::number_of_threads(2)), "PMMP");
 }

@@ -1,7 +1,7 @@
 // Copyright (c) 2026 The CGAL_ext geodesics developers.
 // Assertions on distance fields (against a reference, against exact values, the properties of
-// every distance field, a Steiner-point upper bound where no exact reference exists) and on the
-// errors the package throws.
+// every distance field, a Steiner-point upper bound where no exact reference exists), on the
+// errors the package throws, and GoogleTest names.
 #ifndef CGAL_EXT_TEST_SUPPORT_CHECKS_H
 #define CGAL_EXT_TEST_SUPPORT_CHECKS_H
 
@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <functional>
 #include <initializer_list>
@@ -51,22 +52,35 @@ inline double max_difference(const std::vector<double>& a, const std::vector<dou
   return e;
 }
 
-/// Checks `max_difference(ours, reference) <= tolerance * diagonal`; prints the measured error
-/// relative to the diagonal so that the run documents what was reached.
+/// Prints the error measured against a reference field, so that the run documents what was
+/// reached, and checks that it is within the tolerance; on failure, says where the worst
+/// vertex is and what both fields hold there.
+inline ::testing::AssertionResult error_within(const std::string& label, const std::string& measure,
+                                               const std::string& failure, double error, double tolerance,
+                                               std::size_t worst, const std::vector<double>& ours,
+                                               const std::vector<double>& reference,
+                                               const std::string& reference_name)
+{
+  std::cout << "[ error    ] " << label << ": " << measure << " = " << error << std::endl;
+  if(error <= tolerance)
+    return ::testing::AssertionSuccess();
+  std::ostringstream msg;
+  msg.precision(17);
+  msg << label << ": " << failure << error << " > " << tolerance << " at vertex " << worst << " (ours "
+      << (worst < ours.size() ? ours[worst] : -1) << ", " << reference_name << " "
+      << (worst < reference.size() ? reference[worst] : -1) << ")";
+  return ::testing::AssertionFailure() << msg.str();
+}
+
+/// Checks `max_difference(ours, reference) <= tolerance * diagonal`, printing the measured error
+/// relative to the diagonal.
 inline ::testing::AssertionResult agrees(const std::vector<double>& ours, const std::vector<double>& reference,
                                          double diagonal, double tolerance, const std::string& label)
 {
   std::size_t worst = 0;
   const double e = max_difference(ours, reference, &worst) / diagonal;
-  std::cout << "[ error    ] " << label << ": max |ours - reference| / diag = " << e << std::endl;
-  if(e <= tolerance)
-    return ::testing::AssertionSuccess();
-  std::ostringstream msg;
-  msg.precision(17);
-  msg << label << ": max error / diag = " << e << " > " << tolerance << " at vertex " << worst << " (ours "
-      << (worst < ours.size() ? ours[worst] : -1) << ", reference "
-      << (worst < reference.size() ? reference[worst] : -1) << ")";
-  return ::testing::AssertionFailure() << msg.str();
+  return error_within(label, "max |ours - reference| / diag", "max error / diag = ", e, tolerance, worst, ours,
+                      reference, "reference");
 }
 
 /// Checks |ours - exact| <= tolerance * exact at every vertex (so a zero distance must be exactly
@@ -86,14 +100,8 @@ inline ::testing::AssertionResult agrees_relative(const std::vector<double>& our
       worst = i;
     }
   }
-  std::cout << "[ error    ] " << label << ": max |ours - exact| / exact = " << worst_ratio << std::endl;
-  if(worst_ratio <= tolerance)
-    return ::testing::AssertionSuccess();
-  std::ostringstream msg;
-  msg.precision(17);
-  msg << label << ": relative error " << worst_ratio << " > " << tolerance << " at vertex " << worst << " (ours "
-      << ours[worst] << ", exact " << exact[worst] << ")";
-  return ::testing::AssertionFailure() << msg.str();
+  return error_within(label, "max |ours - exact| / exact", "relative error ", worst_ratio, tolerance, worst, ours,
+                      exact, "exact");
 }
 
 /// Checks the properties every exact distance field has: it is non-negative, zero at a vertex
@@ -194,6 +202,16 @@ template <class F>
     return ::testing::AssertionFailure() << "threw something that is not an exception";
   }
   return ::testing::AssertionFailure() << "did not throw";
+}
+
+/// a name GoogleTest accepts for a parameterized case: every character but letters and digits
+/// becomes '_' ("elephant-with-holes" gives "elephant_with_holes")
+inline std::string test_name(std::string n)
+{
+  for(char& c : n)
+    if(!std::isalnum(static_cast<unsigned char>(c)))
+      c = '_';
+  return n;
 }
 
 } // namespace test_support

@@ -91,6 +91,22 @@ inline Mesh cut_open(const Mesh& in, int count)
   return m;
 }
 
+/// The transformations the oracle comparisons run on real meshes: geometry the solvers have
+/// never seen.
+enum Transform { SCALED_DOWN, SCALED_UP, LOOP_SUBDIVIDED, JITTERED, CUT_OPEN };
+constexpr const char* transform_names[] = {"scaled_1e-3", "scaled_1e3", "loop_subdivided", "jittered", "cut_open"};
+
+inline Mesh transformed(const Mesh& m, Transform t)
+{
+  switch(t) {
+  case SCALED_DOWN: return scaled(m, 1e-3);
+  case SCALED_UP: return scaled(m, 1e3);
+  case LOOP_SUBDIVIDED: return loop_subdivided(m);
+  case JITTERED: return jittered(m, 1e-3);
+  default: return cut_open(m, 6);
+  }
+}
+
 /// The disjoint union of the meshes: the vertices of each part follow those of the previous
 /// parts in their order, and so do the faces (face f of part k has the index of f plus the
 /// faces of the parts before it; its corners may start at another vertex, see

@@ -1,6 +1,6 @@
 // Copyright (c) 2026 The CGAL_ext geodesics developers.
 // The meshes of the test suite and places on them: the types every test uses, the data meshes
-// read once per process, meshes built from triangle soups, face locations.
+// read once per process, meshes built from triangle soups, face locations and sources.
 #ifndef CGAL_EXT_TEST_SUPPORT_MESHES_H
 #define CGAL_EXT_TEST_SUPPORT_MESHES_H
 
@@ -49,27 +49,22 @@ inline Mesh read_off(const std::string& path)
   return m;
 }
 
-/// the mesh NAME.off of `folder`, read once per process
-inline const Mesh& cached_mesh(const std::string& folder, const std::string& name)
+/// the file of a test mesh by name: the repository's data/ copy for elephant and mushroom, else
+/// CGAL's data mesh (fandisk, cactus, ...)
+inline std::string test_mesh_path(const std::string& name)
 {
-  static std::map<std::string, Mesh> cache;
-  const std::string path = folder + "/" + name + ".off";
-  auto it = cache.find(path);
-  if(it == cache.end())
-    it = cache.emplace(path, read_off(path)).first;
-  return it->second;
+  const bool ours = name == "elephant" || name == "mushroom";
+  return std::string(ours ? CGAL_EXT_DATA_DIR : CGAL_EXT_CGAL_MESHES) + "/" + name + ".off";
 }
 
-/// one of CGAL's data meshes (elephant, fandisk, ...)
-inline const Mesh& cgal_mesh(const std::string& name) { return cached_mesh(CGAL_EXT_CGAL_MESHES, name); }
-
-/// a mesh of the repository's data/ folder (elephant, mushroom)
-inline const Mesh& data_mesh(const std::string& name) { return cached_mesh(CGAL_EXT_DATA_DIR, name); }
-
-/// a mesh by name: the repository's data/ copy for elephant and mushroom, else CGAL's
+/// a test mesh by name (see `test_mesh_path`), read once per process
 inline const Mesh& test_mesh(const std::string& name)
 {
-  return (name == "elephant" || name == "mushroom") ? data_mesh(name) : cgal_mesh(name);
+  static std::map<std::string, Mesh> cache;
+  auto it = cache.find(name);
+  if(it == cache.end())
+    it = cache.emplace(name, read_off(test_mesh_path(name))).first;
+  return it->second;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -181,6 +176,9 @@ inline Face_location transferred_location(const Mesh& from, const Face_location&
   return Face_location(g, b);
 }
 
+/// how many barycentric coordinates are zero: 1 on an edge, 2 at a corner
+inline int zero_coordinates(const Barycentric& b) { return (b[0] == 0) + (b[1] == 0) + (b[2] == 0); }
+
 /// The index of the only zero barycentric coordinate of a face location (a point of an edge
 /// of its face, opposite that corner), or -1 if none or several are zero.
 inline int only_zero_coordinate(const Face_location& l)
@@ -201,6 +199,19 @@ inline bool on_border_edge(const Mesh& m, const Face_location& l)
   const int zero = only_zero_coordinate(l);
   return zero >= 0 && m.is_border(m.opposite(m.halfedge(c[(zero + 1) % 3], c[(zero + 2) % 3])));
 }
+
+// ---------------------------------------------------------------------------------------------
+// Sources
+
+/// Vertex and face-location sources together; source i is the i-th in the order vertices, then
+/// face locations (the order in which the tests add them to Surface_mesh_geodesic_paths).
+struct Sources
+{
+  std::vector<Vertex> vertices;
+  std::vector<Face_location> faces;
+
+  std::size_t size() const { return vertices.size() + faces.size(); }
+};
 
 } // namespace test_support
 

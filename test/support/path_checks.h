@@ -1,6 +1,6 @@
 // Copyright (c) 2026 The CGAL_ext geodesics developers.
 // Checks of the shortest paths of CGAL_ext::Surface_mesh_geodesic_paths: what every shortest
-// path must be, distances to polylines, and path comparisons. The
+// path must be, where it starts and ends, distances to polylines, and path comparisons. The
 // templates take the class's Path_point type, so this header does not need the class.
 #ifndef CGAL_EXT_TEST_SUPPORT_PATH_CHECKS_H
 #define CGAL_EXT_TEST_SUPPORT_PATH_CHECKS_H
@@ -101,9 +101,7 @@ std::vector<Face> faces_of(const Mesh& m, const PathPoint& p)
   } else {
     faces.push_back(p.face);
     const auto c = face_corners(m, p.face);
-    int zeros = 0;
-    for(int k = 0; k < 3; ++k)
-      zeros += p.barycentric[k] == 0;
+    const int zeros = zero_coordinates(p.barycentric);
     for(int k = 0; k < 3; ++k) {
       if(p.barycentric[k] != 0)
         continue;
@@ -173,6 +171,65 @@ template <class PathPoint>
     if(p.kind == PathPoint::VERTEX && !is_saddle_or_border(m, p.vertex))
       return ::testing::AssertionFailure() << describe(i) << ": passes through a vertex of angle sum "
                                            << angle_sum(m, p.vertex) << " (neither saddle nor border)";
+  }
+  return ::testing::AssertionSuccess();
+}
+
+/// The first point of a path is source i of `s`, exactly.
+template <class PathPoint>
+::testing::AssertionResult starts_at_source(const Mesh& m, const Sources& s, std::size_t i, const PathPoint& p)
+{
+  if(i < s.vertices.size()) {
+    const Vertex v = s.vertices[i];
+    if(p.kind != PathPoint::VERTEX || p.vertex != v || p.point != m.point(v))
+      return ::testing::AssertionFailure() << "the path does not start at source vertex " << v << " (kind "
+                                           << int(p.kind) << ", at " << p.point << ")";
+    return ::testing::AssertionSuccess();
+  }
+  const Face_location& l = s.faces[i - s.vertices.size()];
+  const double off = distance_3(p.point, location_point(m, l));
+  const std::vector<Face> f = faces_of(m, p);
+  if(!(off <= 1e-14 * bbox_diagonal(m)) || std::find(f.begin(), f.end(), l.first) == f.end())
+    return ::testing::AssertionFailure() << "the path starts " << off << " away from source " << i << " in face "
+                                         << l.first << " (kind " << int(p.kind) << ")";
+  return ::testing::AssertionSuccess();
+}
+
+/// The last point of a path is the target, exactly, and says where it is.
+template <class PathPoint>
+::testing::AssertionResult ends_at_target(const Mesh& m, Vertex v, const PathPoint& p)
+{
+  if(p.kind != PathPoint::VERTEX || p.vertex != v || p.point != m.point(v))
+    return ::testing::AssertionFailure() << "the path does not end at vertex " << v;
+  return ::testing::AssertionSuccess();
+}
+template <class PathPoint>
+::testing::AssertionResult ends_at_target(const Mesh& m, const Face_location& l, const PathPoint& p)
+{
+  const double off = distance_3(p.point, location_point(m, l));
+  if(!(off <= 1e-14 * bbox_diagonal(m)))
+    return ::testing::AssertionFailure() << "the path ends " << off << " away from the target";
+  const auto c = face_corners(m, l.first);
+  switch(zero_coordinates(l.second)) {
+  case 0:
+    if(p.kind != PathPoint::FACE || p.face != l.first)
+      return ::testing::AssertionFailure() << "a target inside face " << l.first << " ends as kind " << int(p.kind);
+    for(int k = 0; k < 3; ++k)
+      if(!(std::abs(p.barycentric[k] - l.second[k]) <= 1e-15))
+        return ::testing::AssertionFailure() << "the target's coordinate " << k << " is " << p.barycentric[k];
+    break;
+  case 1: {
+    if(p.kind != PathPoint::EDGE)
+      return ::testing::AssertionFailure() << "a target on an edge ends as kind " << int(p.kind);
+    const std::vector<Face> f = faces_of(m, p);
+    if(std::find(f.begin(), f.end(), l.first) == f.end())
+      return ::testing::AssertionFailure() << "the target's edge is not an edge of face " << l.first;
+    break;
+  }
+  default:
+    for(int k = 0; k < 3; ++k)
+      if(l.second[k] == 1 && (p.kind != PathPoint::VERTEX || p.vertex != c[k]))
+        return ::testing::AssertionFailure() << "a target at corner " << c[k] << " ends as kind " << int(p.kind);
   }
   return ::testing::AssertionSuccess();
 }

@@ -32,18 +32,19 @@ std::vector<double> solve(const Graph& g, const SourceRange& sources,
 /// The solver from vertex and face sources together. `geodesic_distances` takes one range
 /// type, so the vertices are passed as corner locations (coordinate 1 at the vertex), which the
 /// solver turns back into vertex sources (test_oracle checks that the results are identical).
-template <class NamedParameters = CGAL_ext::parameters::Default_named_parameters_type>
+template <class ConcurrencyTag = CGAL::Sequential_tag,
+          class NamedParameters = CGAL_ext::parameters::Default_named_parameters_type>
 std::vector<double> solve_mixed(const Mesh& m, const std::vector<Vertex>& vertex_sources,
                                 const std::vector<Face_location>& face_sources,
                                 const NamedParameters& np = CGAL_ext::parameters::default_values())
 {
   if(face_sources.empty())
-    return solve(m, vertex_sources, np);
+    return solve<ConcurrencyTag>(m, vertex_sources, np);
   std::vector<Face_location> all;
   for(Vertex v : vertex_sources)
     all.push_back(corner_location(m, v));
   all.insert(all.end(), face_sources.begin(), face_sources.end());
-  return solve(m, all, np);
+  return solve<ConcurrencyTag>(m, all, np);
 }
 
 } // namespace test_support
