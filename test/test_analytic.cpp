@@ -2,9 +2,12 @@
 // Exact distances on developable and simple polyhedral surfaces, where the geodesic distance is
 // known in closed form: planar grids, an open cylinder, cones, a cube and a tetrahedron.
 
-#include "test_support.h"
+#include "support/analytic_surfaces.h"
+#include "support/checks.h"
+#include "support/solve.h"
 
 #include <cmath>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -12,35 +15,11 @@ using namespace test_support;
 
 namespace {
 
-const double pi = 3.14159265358979323846;
-
-// Sources: vertices, and face locations whose developed position is the barycentric
-// combination of the developed corners.
-struct Source
-{
-  std::vector<Vertex> vertices;
-  std::vector<Face_location> faces;
-};
-
-// The developed position of a face location. Faces that straddle the seam of a periodic
-// development (cylinder, cone) have corners developed on both ends: `unwrap` moves each corner
-// next to the first one before combining.
-template <class Unwrap>
-Point_2 developed_location(const Mesh& m, const Face_location& l, Unwrap unwrap)
-{
-  const auto dev = developed_map(m);
-  const auto c = face_corners(m, l.first);
-  const Point_2 p0 = get(dev, c[0]);
-  const Point_2 p1 = unwrap(p0, get(dev, c[1]));
-  const Point_2 p2 = unwrap(p0, get(dev, c[2]));
-  return Point_2(l.second[0] * p0.x() + l.second[1] * p1.x() + l.second[2] * p2.x(),
-                 l.second[0] * p0.y() + l.second[1] * p1.y() + l.second[2] * p2.y());
-}
-
 // The exact distance field: the minimum over the sources of `distance(source position, vertex
-// position)` in the development.
+// position)` in the development, where a face-location source is at the barycentric combination
+// of its developed corners (unwrapped across the seam of a periodic development).
 template <class Distance, class Unwrap>
-std::vector<double> exact_field(const Mesh& m, const Source& s, Distance distance, Unwrap unwrap)
+std::vector<double> exact_field(const Mesh& m, const Sources& s, Distance distance, Unwrap unwrap)
 {
   const auto dev = developed_map(m);
   std::vector<Point_2> from;
@@ -57,7 +36,7 @@ std::vector<double> exact_field(const Mesh& m, const Source& s, Distance distanc
 
 auto no_unwrap = [](const Point_2&, const Point_2& q) { return q; };
 
-std::vector<double> solve_sources(const Mesh& m, const Source& s) { return solve_mixed(m, s.vertices, s.faces); }
+std::vector<double> solve_sources(const Mesh& m, const Sources& s) { return solve_mixed(m, s.vertices, s.faces); }
 
 // ---------------------------------------------------------------------------------------------
 // Planar grids: the geodesic distance is the Euclidean one in a convex domain; in the L-shaped
@@ -75,26 +54,6 @@ std::ostream& operator<<(std::ostream& os, const Planar_case& c) { return os << 
 
 class Planar : public ::testing::TestWithParam<Planar_case> {};
 
-// Whether the open segment pq passes through the removed open quadrant {x > c.x, y > c.y}.
-bool blocked(const Point_2& p, const Point_2& q, const Point_2& c)
-{
-  double lo = 0, hi = 1;
-  for(int axis = 0; axis < 2; ++axis) {
-    const double a = axis ? p.y() : p.x(), b = axis ? q.y() : q.x(), t = axis ? c.y() : c.x();
-    if(a == b) {
-      if(!(a > t))
-        return false;
-      continue;
-    }
-    const double cross = (t - a) / (b - a); // where the coordinate equals t
-    if(b > a)
-      lo = std::max(lo, cross);
-    else
-      hi = std::min(hi, cross);
-  }
-  return lo < hi - 1e-15;
-}
-
 TEST_P(Planar, EuclideanDistance)
 {
   const Planar_case& c = GetParam();
@@ -109,8 +68,7 @@ TEST_P(Planar, EuclideanDistance)
               CGAL::LEFT_TURN)
       << "face " << f << " is flipped";
   }
-  const int half = (n - 1) / 2;
-  const Point_2 corner(half * h, half * h);
+  const L_shape l_shape = grid_l_shape(n, h);
   // vertex indices: the grid is numbered row by row (rows shortened in the L's upper half)
   Vertex interior, grid_corner(0);
   for(Vertex v : m.vertices()) {
@@ -119,7 +77,7 @@ TEST_P(Planar, EuclideanDistance)
       interior = v;
   }
   ASSERT_TRUE(interior.is_valid());
-  Source s;
+  Sources s;
   switch(c.source) {
   case 0: s.vertices = {interior}; break;
   case 1: s.vertices = {grid_corner}; break;
@@ -128,9 +86,7 @@ TEST_P(Planar, EuclideanDistance)
   default: s.vertices = {interior, Vertex(static_cast<Mesh::size_type>(m.number_of_vertices() - 1))};
   }
   auto distance = [&](const Point_2& p, const Point_2& q) {
-    if(c.l_shape && blocked(p, q, corner))
-      return std::sqrt(CGAL::squared_distance(p, corner)) + std::sqrt(CGAL::squared_distance(corner, q));
-    return std::sqrt(CGAL::squared_distance(p, q));
+    return c.l_shape ? l_shape.distance(p, q) : std::sqrt(CGAL::squared_distance(p, q));
   };
   const std::vector<double> exact = exact_field(m, s, distance, no_unwrap);
   EXPECT_TRUE(agrees_relative(solve_sources(m, s), exact, 1e-12, c.name));
@@ -151,7 +107,8 @@ INSTANTIATE_TEST_SUITE_P(
 // ---------------------------------------------------------------------------------------------
 // The open polyhedral cylinder develops isometrically into a strip of width W = n * chord,
 // periodic in its first coordinate; the strip is convex across its height, so the distance is
-// the smallest planar distance between the source and the copies of the target shifted by W.
+// the smallest planar distance between the source and the copies of the target shifted by W
+// (Strip in support/analytic_surfaces.h).
 
 struct Cylinder_case
 {
@@ -169,9 +126,9 @@ TEST_P(Cylinder, UnrolledStripDistance)
   const Cylinder_case& c = GetParam();
   const double r = 1.5, height = 4;
   const Mesh m = make_cylinder(r, c.segments, height, c.rows);
-  const double width = c.segments * 2 * r * std::sin(pi / c.segments);
+  const Strip strip = cylinder_strip(r, c.segments);
   const std::size_t nf = m.number_of_faces();
-  Source s;
+  Sources s;
   const Vertex middle(static_cast<Mesh::size_type>((c.rows / 2) * c.segments + c.segments / 3));
   switch(c.source) {
   case 0: s.vertices = {Vertex(0)}; break;
@@ -182,19 +139,8 @@ TEST_P(Cylinder, UnrolledStripDistance)
     s.vertices = {middle};
     s.faces = {location(nf - 1, 0.3, 0.3)}; // a face on the seam (last column)
   }
-  auto unwrap = [&](const Point_2& ref, const Point_2& q) {
-    if(q.x() - ref.x() > width / 2)
-      return Point_2(q.x() - width, q.y());
-    if(ref.x() - q.x() > width / 2)
-      return Point_2(q.x() + width, q.y());
-    return q;
-  };
-  auto distance = [&](const Point_2& p, const Point_2& q) {
-    double best = inf;
-    for(int shift = -2; shift <= 2; ++shift)
-      best = std::min(best, std::hypot(q.x() - p.x() + shift * width, q.y() - p.y()));
-    return best;
-  };
+  auto unwrap = [&](const Point_2& ref, const Point_2& q) { return strip.unwrapped(ref, q); };
+  auto distance = [&](const Point_2& p, const Point_2& q) { return strip.distance(p, q); };
   EXPECT_TRUE(agrees_relative(solve_sources(m, s), exact_field(m, s, distance, unwrap), 1e-12, c.name));
 }
 
@@ -211,7 +157,8 @@ INSTANTIATE_TEST_SUITE_P(Analytic, Cylinder,
 // The polyhedral cone develops into a sector of angle theta around the apex. From the apex, the
 // distance is the slant distance. When theta < pi the development cut along any generator is
 // convex, so between two points at polar (r1, a1), (r2, a2) the distance is the planar one for
-// the smaller of the two angular gaps |a1 - a2| and theta - |a1 - a2|.
+// the smaller of the two angular gaps |a1 - a2| and theta - |a1 - a2| (Sector in
+// support/analytic_surfaces.h).
 
 struct Cone_case
 {
@@ -228,13 +175,13 @@ class Cone : public ::testing::TestWithParam<Cone_case> {};
 TEST_P(Cone, DevelopedSectorDistance)
 {
   const Cone_case& c = GetParam();
-  double theta = 0;
-  const Mesh m = make_cone(c.radius, c.height, c.segments, c.rings, &theta);
+  const Mesh m = make_cone(c.radius, c.height, c.segments, c.rings);
+  const Sector sector = cone_sector(c.radius, c.height, c.segments);
   if(c.source != 0)
-    ASSERT_LT(theta, pi) << "the closed form below needs a sector narrower than pi";
+    ASSERT_LT(sector.angle, pi) << "the closed form needs a sector narrower than pi";
   auto vertex = [&](int k, int j) { return Vertex(static_cast<Mesh::size_type>(1 + (j - 1) * c.segments + k)); };
   const std::size_t nf = m.number_of_faces();
-  Source s;
+  Sources s;
   switch(c.source) {
   case 0: s.vertices = {Vertex(0)}; break;
   case 1: s.vertices = {vertex(c.segments / 4, c.rings)}; break;
@@ -244,25 +191,8 @@ TEST_P(Cone, DevelopedSectorDistance)
     s.vertices = {vertex(1, c.rings)};
     s.faces = {location(nf - 2, 0.4, 0.35)}; // near the seam
   }
-  // Developed vertices are at angles in [0, theta); an unwrapped face location may lie slightly
-  // below 0 or beyond theta: only angle differences modulo theta matter.
-  auto polar_angle = [&](const Point_2& p) { return std::atan2(p.y(), p.x()); };
-  auto unwrap = [&](const Point_2& ref, const Point_2& q) {
-    // put q at an angle within theta / 2 of ref's by turning it by +- theta
-    const double d = polar_angle(q) - polar_angle(ref);
-    const double turn = d > theta / 2 ? -theta : (d < -theta / 2 ? theta : 0.);
-    return Point_2(q.x() * std::cos(turn) - q.y() * std::sin(turn), q.x() * std::sin(turn) + q.y() * std::cos(turn));
-  };
-  auto distance = [&](const Point_2& p, const Point_2& q) {
-    const double r1 = std::hypot(p.x(), p.y()), r2 = std::hypot(q.x(), q.y());
-    if(r1 == 0 || r2 == 0)
-      return r1 + r2;
-    double gap = std::fmod(std::abs(polar_angle(p) - polar_angle(q)), theta);
-    gap = std::min(gap, theta - gap);
-    if(gap >= pi)
-      return r1 + r2; // through the apex
-    return std::sqrt(std::max(0., r1 * r1 + r2 * r2 - 2 * r1 * r2 * std::cos(gap)));
-  };
+  auto unwrap = [&](const Point_2& ref, const Point_2& q) { return sector.unwrapped(ref, q); };
+  auto distance = [&](const Point_2& p, const Point_2& q) { return sector.distance(p, q); };
   EXPECT_TRUE(agrees_relative(solve_sources(m, s), exact_field(m, s, distance, unwrap), 1e-12, c.name));
 }
 
@@ -308,15 +238,9 @@ TEST_P(Cube, DistancesFromACorner)
   const std::vector<double> d = solve(m, Vertex(0));
   EXPECT_TRUE(agrees_relative(d, exact, 1e-12, "cube n=" + std::to_string(n)));
   // the corners by name
-  for(Vertex v : m.vertices()) {
-    const Point& p = m.point(v);
-    const int at_side = (p.x() == side) + (p.y() == side) + (p.z() == side);
-    const int at_zero = (p.x() == 0) + (p.y() == 0) + (p.z() == 0);
-    if(at_side + at_zero != 3)
-      continue;
-    const double expected = at_side == 0 ? 0 : at_side == 1 ? side : at_side == 2 ? side * std::sqrt(2.) : side * std::sqrt(5.);
-    EXPECT_NEAR(d[v.idx()], expected, 1e-12 * side) << "corner " << p;
-  }
+  for(Vertex v : m.vertices())
+    if(const std::optional<double> expected = cube_corner_distance(m.point(v), side))
+      EXPECT_NEAR(d[v.idx()], *expected, 1e-12 * side) << "corner " << m.point(v);
 }
 
 INSTANTIATE_TEST_SUITE_P(Analytic, Cube, ::testing::Values(1, 2, 5, 12));

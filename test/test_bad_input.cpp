@@ -2,7 +2,9 @@
 // Bad input: each case must throw CGAL_ext::Geodesic_error whose message names the problem and
 // where it is.
 
-#include "test_support.h"
+#include "support/analytic_surfaces.h"
+#include "support/checks.h"
+#include "support/solve.h"
 
 #include <limits>
 #include <string>

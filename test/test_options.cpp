@@ -2,7 +2,9 @@
 // Named parameters and mesh types: max_distance, stop_vertices, statistics, vertex_point_map,
 // vertex/face index maps, algorithm; several connected components; CGAL::Polyhedron_3.
 
-#include "test_support.h"
+#include "support/checks.h"
+#include "support/mesh_transformations.h"
+#include "support/solve.h"
 
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/Polyhedron_items_with_id_3.h>
@@ -14,7 +16,9 @@
 #include <boost/property_map/property_map.hpp>
 
 #include <algorithm>
+#include <fstream>
 #include <iterator>
+#include <map>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -321,8 +325,7 @@ template <class P>
 P read_polyhedron(const std::string& name)
 {
   P p;
-  const std::string path = (name == "elephant" || name == "mushroom") ? std::string(CGAL_EXT_DATA_DIR) + "/" + name + ".off"
-                                                                       : std::string(CGAL_EXT_CGAL_MESHES) + "/" + name + ".off";
+  const std::string path = test_mesh_path(name);
   std::ifstream in(path);
   if(!CGAL::IO::read_OFF(in, p))
     throw std::runtime_error("cannot read " + path);

@@ -8,12 +8,14 @@
 // Dijkstra over Steiner points finds shorter surface paths, converging to our 27.3131 (40 points
 // per edge: 27.431, 80: 27.339, 120: 27.325). These meshes get the oracle-free checks at the end.
 
-#include "test_support.h"
+#include "support/checks.h"
+#include "support/mesh_transformations.h"
+#include "support/oracle.h"
+#include "support/solve.h"
 
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 
 #include <algorithm>
-#include <cctype>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -85,11 +87,7 @@ INSTANTIATE_TEST_SUITE_P(Oracle, Mesh_characteristics,
                                            Characteristics{"elephant-with-holes", true, 1, 0.15, 31},
                                            Characteristics{"man", false, 1, 0.5, 0.03},
                                            Characteristics{"blobby_3cc", true, 3, 0.15, 31}),
-                         [](const ::testing::TestParamInfo<Characteristics>& i) {
-                           std::string n = i.param.name;
-                           std::replace(n.begin(), n.end(), '-', '_');
-                           return n;
-                         });
+                         [](const ::testing::TestParamInfo<Characteristics>& i) { return test_name(i.param.name); });
 
 // ---------------------------------------------------------------------------------------------
 // Sources
@@ -97,12 +95,6 @@ INSTANTIATE_TEST_SUITE_P(Oracle, Mesh_characteristics,
 enum Source_kind { ONE_VERTEX, SEVERAL_VERTICES, FACE_INTERIOR, FACE_EDGE, NEAR_VERTEX, MIXED };
 const char* source_names[] = {"one_vertex", "several_vertices", "face_interior",
                               "face_edge", "near_vertex", "mixed"};
-
-struct Sources
-{
-  std::vector<Vertex> vertices;
-  std::vector<Face_location> faces;
-};
 
 Sources make_sources(const Mesh& m, Source_kind kind)
 {
@@ -142,13 +134,6 @@ TEST_P(Real_mesh, MatchesOracle)
   EXPECT_TRUE(matches_oracle(m, make_sources(m, kind), name + " " + source_names[kind]));
 }
 
-std::string case_name(const std::string& mesh, Source_kind kind)
-{
-  std::string n = mesh + "_" + source_names[kind];
-  std::replace(n.begin(), n.end(), '-', '_');
-  return n;
-}
-
 INSTANTIATE_TEST_SUITE_P(Oracle, Real_mesh,
                          ::testing::Combine(::testing::Values("elephant", "mushroom", "fandisk", "cactus", "knot1",
                                                               "cylinder", "elephant-with-holes", "man",
@@ -156,14 +141,12 @@ INSTANTIATE_TEST_SUITE_P(Oracle, Real_mesh,
                                             ::testing::Values(ONE_VERTEX, SEVERAL_VERTICES, FACE_INTERIOR, FACE_EDGE,
                                                               NEAR_VERTEX, MIXED)),
                          [](const ::testing::TestParamInfo<std::tuple<const char*, Source_kind>>& i) {
-                           return case_name(std::get<0>(i.param), std::get<1>(i.param));
+                           return test_name(std::string(std::get<0>(i.param)) + "_" +
+                                            source_names[std::get<1>(i.param)]);
                          });
 
 // ---------------------------------------------------------------------------------------------
 // Transformed meshes: geometry the solver has never seen.
-
-enum Transform { SCALED_DOWN, SCALED_UP, LOOP_SUBDIVIDED, JITTERED, CUT_OPEN };
-const char* transform_names[] = {"scaled_1e-3", "scaled_1e3", "loop_subdivided", "jittered", "cut_open"};
 
 struct Transformed_case
 {
@@ -171,26 +154,14 @@ struct Transformed_case
   Transform transform;
 };
 
-Mesh transformed(const Transformed_case& c)
-{
-  const Mesh& m = test_mesh(c.mesh);
-  switch(c.transform) {
-  case SCALED_DOWN: return scaled(m, 1e-3);
-  case SCALED_UP: return scaled(m, 1e3);
-  case LOOP_SUBDIVIDED: return loop_subdivided(m);
-  case JITTERED: return jittered(m, 1e-3);
-  default: return cut_open(m, 6);
-  }
-}
-
 class Transformed_mesh : public ::testing::TestWithParam<std::tuple<Transformed_case, Source_kind>> {};
 
 TEST_P(Transformed_mesh, MatchesOracle)
 {
   const Transformed_case& c = std::get<0>(GetParam());
   const Source_kind kind = std::get<1>(GetParam());
-  const Mesh m = transformed(c);
   const Mesh& original = test_mesh(c.mesh);
+  const Mesh m = transformed(original, c.transform);
   // the transformation did what it says
   switch(c.transform) {
   case LOOP_SUBDIVIDED: ASSERT_EQ(m.number_of_faces(), 4 * original.number_of_faces()); break;
@@ -218,11 +189,8 @@ INSTANTIATE_TEST_SUITE_P(
                      ::testing::Values(SEVERAL_VERTICES, FACE_EDGE, MIXED)),
   [](const ::testing::TestParamInfo<std::tuple<Transformed_case, Source_kind>>& i) {
     const Transformed_case& c = std::get<0>(i.param);
-    std::string n = std::string(c.mesh) + "_" + transform_names[c.transform] + "_" + source_names[std::get<1>(i.param)];
-    for(char& ch : n)
-      if(!std::isalnum(static_cast<unsigned char>(ch)))
-        ch = '_';
-    return n;
+    return test_name(std::string(c.mesh) + "_" + transform_names[c.transform] + "_" +
+                     source_names[std::get<1>(i.param)]);
   });
 
 // ---------------------------------------------------------------------------------------------

@@ -1,8 +1,9 @@
 // Parallel (PVTP) and approximate (AVTP, PAVTP) propagation: the same distances for every
 // thread count and batch size, exactness of PVTP, the limits and bounds of the approximation.
 // This file is also built under ThreadSanitizer (test_parallel_tsan).
-#define CGAL_EXT_TEST_NO_ORACLE
-#include "test_support.h"
+#include "support/checks.h"
+#include "support/path_checks.h"
+#include "support/solve.h"
 
 #include <CGAL_ext/Surface_mesh_geodesic_paths.h>
 #include <CGAL_ext/Geodesics_3/internal/Parallel_for.h>
@@ -12,6 +13,7 @@
 #include <atomic>
 #include <chrono>
 #include <numeric>
+#include <random>
 #include <stdexcept>
 #include <thread>
 
@@ -22,21 +24,6 @@ using namespace test_support;
 using CGAL_ext::parameters::approximation;
 using CGAL_ext::parameters::batch_size;
 using CGAL_ext::parameters::number_of_threads;
-
-/// max |a - b| over vertices, +infinity where exactly one of them is infinite
-double max_difference(const std::vector<double>& a, const std::vector<double>& b)
-{
-  double worst = 0;
-  for(std::size_t i = 0; i < a.size(); ++i) {
-    if(std::isinf(a[i]) || std::isinf(b[i])) {
-      if(a[i] != b[i])
-        return inf;
-      continue;
-    }
-    worst = std::max(worst, std::abs(a[i] - b[i]));
-  }
-  return worst;
-}
 
 /// mean of (approx - exact) / exact over vertices farther than 1e-12 from the sources
 double mean_relative_error(const std::vector<double>& approx, const std::vector<double>& exact)
@@ -70,9 +57,7 @@ template <class ConcurrencyTag = CGAL::Sequential_tag, class NamedParameters = C
 std::vector<double> solve_set(const Mesh& m, const Source_set& s,
                               const NamedParameters& np = CGAL_ext::parameters::default_values())
 {
-  if(s.faces.empty())
-    return solve<ConcurrencyTag>(m, s.vertices, np);
-  return solve<ConcurrencyTag>(m, s.faces, np);
+  return solve_mixed<ConcurrencyTag>(m, s.vertices, s.faces, np);
 }
 
 class Parallel_on_mesh : public ::testing::TestWithParam<std::string>
@@ -353,11 +338,7 @@ TEST(Parallel_paths, pmmp_is_identical_for_every_thread_count_and_matches_vtp)
   const std::size_t nf = m.number_of_faces();
   const std::vector<Vertex> vertex_sources = {Vertex(0), Vertex(m.number_of_vertices() / 2)};
   const std::vector<Face_location> face_sources = {location(nf / 3, 0.2, 0.3), location(2 * nf / 3, 0., 0.4)};
-  std::vector<Face_location> all_sources;
-  for(Vertex v : vertex_sources)
-    all_sources.push_back(corner_location(m, v));
-  all_sources.insert(all_sources.end(), face_sources.begin(), face_sources.end());
-  const std::vector<double> vtp = solve(m, all_sources);
+  const std::vector<double> vtp = solve_mixed(m, vertex_sources, face_sources);
   const std::vector<Vertex> vertex_targets = spread_vertices(m, 25, 7);
   std::vector<Face_location> point_targets;
   for(std::size_t i = 0; i < 25; ++i)
@@ -385,8 +366,9 @@ TEST(Parallel_paths, pmmp_is_identical_for_every_thread_count_and_matches_vtp)
       a.paths.emplace_back();
       p.shortest_path_surface_points(v, std::back_inserter(a.paths.back()));
     }
-    a.function_distances = solve<CGAL::Parallel_tag>(
-      m, all_sources, CGAL_ext::parameters::algorithm(CGAL_ext::FWP_MMP).number_of_threads(threads).batch_size(batch));
+    a.function_distances = solve_mixed<CGAL::Parallel_tag>(
+      m, vertex_sources, face_sources,
+      CGAL_ext::parameters::algorithm(CGAL_ext::FWP_MMP).number_of_threads(threads).batch_size(batch));
     return a;
   };
 
