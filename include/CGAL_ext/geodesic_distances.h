@@ -135,10 +135,7 @@ void geodesic_distances(const TriangleMesh& tm, VertexDistanceMap vertex_distanc
 
   if(settings.algorithm != VTP) { // the MMP family keeps its windows for queries: the same as a build
     Surface_mesh_geodesic_paths<TriangleMesh, ConcurrencyTag, Vertex_point_map> paths(tm, np);
-    if constexpr(internal::is_range<Sources>::value)
-      paths.add_sources(sources);
-    else
-      paths.add_source(sources);
+    internal::for_each_source(sources, [&](const auto& s) { paths.add_source(s); });
     paths.build(np);
     paths.vertex_distances(vertex_distance_map);
     return;

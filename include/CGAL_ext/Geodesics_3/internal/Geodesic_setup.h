@@ -45,6 +45,18 @@ struct is_range : std::false_type {};
 template <class T>
 struct is_range<T, std::void_t<decltype(std::begin(std::declval<const T&>()))>> : std::true_type {};
 
+/// Calls `f(s)` for `sources` when it is one source, for each of its elements when it is a range.
+template <class Sources, class Function>
+void for_each_source(const Sources& sources, Function f)
+{
+  if constexpr(is_range<Sources>::value) {
+    for(const auto& s : sources)
+      f(s);
+  } else {
+    f(sources);
+  }
+}
+
 /// A triangle mesh of the caller as the solvers see it: the `Mesh_cache` (checked), and the
 /// way between the caller's descriptors and the cache's indices. The cache is on the heap, so
 /// that solvers referring to it survive a move of this object.
@@ -126,12 +138,7 @@ public:
   std::vector<Source_point> source_points(const Sources& sources) const
   {
     std::vector<Source_point> points;
-    if constexpr(is_range<Sources>::value) {
-      for(const auto& s : sources)
-        points.push_back(source_point(s));
-    } else {
-      points.push_back(source_point(sources));
-    }
+    for_each_source(sources, [&](const auto& s) { points.push_back(source_point(s)); });
     return points;
   }
 
