@@ -252,13 +252,13 @@ public:
 
   /// \param v a vertex
   /// \return the distance from the nearest source to `v`
-  FT distance(vertex_descriptor v) const { return FT(built().distances()[std::size_t(checked(v))]); }
+  FT distance(vertex_descriptor v) const { return FT(m_mesh.to_mesh_unit(built().distances()[std::size_t(checked(v))])); }
   /// \param p a point of a face
   /// \return the distance from the nearest source to `p`
   FT distance(const Face_location& p) const
   {
     int source;
-    return FT(tracer().distance(locate(p), source));
+    return FT(m_mesh.to_mesh_unit(tracer().distance(locate(p), source)));
   }
   /// \param v a vertex
   /// \return the index of the nearest source of `v` (in the order sources were added; of duplicated
@@ -282,7 +282,7 @@ public:
   template <class VertexDistanceMap>
   void vertex_distances(VertexDistanceMap vertex_distance_map) const
   {
-    m_mesh.write_vertex_values(vertex_distance_map, built().distances());
+    m_mesh.write_vertex_distances(vertex_distance_map, built().distances());
   }
 
   /// writes the points of the shortest path from the nearest source to `target`, the source
@@ -400,7 +400,7 @@ private:
         p.barycentric[k] = FT(l.barycentric[k]);
     }
     const std::array<double, 3> x = m_tracer->position(l);
-    p.point = Point_3(x[0], x[1], x[2]);
+    p.point = Point_3(m_mesh.to_mesh_unit(x[0]), m_mesh.to_mesh_unit(x[1]), m_mesh.to_mesh_unit(x[2]));
     return p;
   }
 

@@ -151,7 +151,7 @@ void geodesic_distances(const TriangleMesh& tm, VertexDistanceMap vertex_distanc
   }
   const double seconds_setup = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   internal::run_solver<parallel>(solver, settings.number_of_threads);
-  mesh.write_vertex_values(vertex_distance_map, solver.distances());
+  mesh.write_vertex_distances(vertex_distance_map, solver.distances());
   internal::report_statistics(settings, solver.statistics(), seconds_setup);
 }
 

@@ -82,7 +82,7 @@ public:
     const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
     const auto fim = CGAL::get_initialized_face_index_map(tm, np);
     build_mesh_cache(tm, m_vpm, vim, fim, *m_cache);
-    m_vertex_of_index.resize(m_cache->number_of_vertices);
+    m_vertex_of_index.resize(m_cache->number_of_mesh_vertices);
     m_face_of_index.resize(m_cache->number_of_faces);
     for(vertex_descriptor v : vertices(tm))
       m_vertex_of_index[std::size_t(get(vim, v))] = v;
@@ -102,7 +102,8 @@ public:
   int index(vertex_descriptor v) const { return m_vertex_index(v); }
   int index(face_descriptor f) const { return m_face_index(f); }
   // (named *_of so that they hide none of the graph's free functions, found by ADL)
-  vertex_descriptor vertex_of(int i) const { return m_vertex_of_index[std::size_t(i)]; }
+  /// The vertex of cache index i (a copy of a non-manifold vertex gives that vertex).
+  vertex_descriptor vertex_of(int i) const { return m_vertex_of_index[std::size_t(m_cache->mesh_vertex(i))]; }
   face_descriptor face_of(int i) const { return m_face_of_index[std::size_t(i)]; }
   /// The descriptor of cache half-edge 3f+k: the k-th after `halfedge(f)` (the cache's corner order).
   halfedge_descriptor halfedge_of(int h) const
@@ -142,13 +143,23 @@ public:
     return points;
   }
 
-  /// Writes `values[i]` to the vertex of index i.
+  /// Writes `values[i]` to the vertex of index i (copies of a vertex have its value).
   template <class VertexValueMap, class T>
   void write_vertex_values(VertexValueMap map, const std::vector<T>& values) const
   {
-    for(std::size_t i = 0; i < values.size(); ++i)
+    for(std::size_t i = 0; i < m_vertex_of_index.size(); ++i)
       put(map, m_vertex_of_index[i], values[i]);
   }
+  /// Writes distances in the cache's unit to the vertices, in the mesh's unit.
+  template <class VertexDistanceMap>
+  void write_vertex_distances(VertexDistanceMap map, const std::vector<double>& distances) const
+  {
+    const double unit = m_cache->unit;
+    for(std::size_t i = 0; i < m_vertex_of_index.size(); ++i)
+      put(map, m_vertex_of_index[i], distances[i] * unit);
+  }
+  /// A length or coordinate in the cache's unit, in the mesh's.
+  double to_mesh_unit(double d) const { return d * m_cache->unit; }
 
 private:
   const TriangleMesh* m_tm; // a pointer, so that the object can be moved

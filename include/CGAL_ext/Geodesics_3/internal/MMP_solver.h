@@ -151,11 +151,18 @@ private:
   void relax(const Vertex_update& u)
   {
     if(u.distance < m_distance[u.vertex]) {
-      m_distance[u.vertex] = u.distance;
-      m_nearest_source[u.vertex] = u.source;
-      if(m_emits_when_taken[u.vertex])
-        push(u.distance, Queue_item{nullptr, u.vertex, 0});
+      set_distance(u.vertex, u);
+      if(m_mesh.is_glued(u.vertex))
+        m_mesh.for_each_glued(u.vertex, [&](int g) { set_distance(g, u); });
     }
+  }
+
+  void set_distance(int v, const Vertex_update& u)
+  {
+    m_distance[v] = u.distance;
+    m_nearest_source[v] = u.source;
+    if(m_emits_when_taken[v])
+      push(u.distance, Queue_item{nullptr, v, 0});
   }
 
   // ---- the queue ----

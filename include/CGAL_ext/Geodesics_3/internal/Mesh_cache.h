@@ -14,6 +14,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <sstream>
 #include <string>
@@ -50,7 +51,19 @@ struct Mesh_cache
   std::vector<std::int32_t> first_outgoing;    // per vertex, -1 if isolated; a border one first
   std::vector<double> angle_sum;               // per vertex
   std::vector<std::uint8_t> is_border_vertex;  // per vertex
-  std::vector<std::uint8_t> is_pseudo_source;  // per vertex: saddle or border vertex
+  std::vector<std::uint8_t> is_pseudo_source;  // per vertex: saddle, border or glued vertex
+  // Vertices [0, number_of_mesh_vertices) are the caller's; a non-manifold vertex keeps its first
+  // fan, and each other fan gets a copy numbered from number_of_mesh_vertices on.
+  std::size_t number_of_mesh_vertices = 0;
+  std::vector<std::int32_t> mesh_vertex_of_copy; // per copy
+  // Glued vertices are one point of the surface (the copies of a non-manifold vertex, and
+  // vertices at the same position): per vertex, the next one of its group, in a cycle. Empty
+  // when no vertex is glued.
+  std::vector<std::int32_t> next_glued;
+  std::size_t number_of_glued_vertices = 0;
+  // Positions are stored divided by `unit`, a power of two (1 unless the mesh is very large or
+  // very small), and every length inside the solvers is in that unit.
+  double unit = 1;
   double mean_edge_length = 0;
   double mean_anisotropy = 1; // mean over faces of p H / (2 sqrt(3) S); 1 for equilateral
   double bbox_diagonal = 0;
@@ -63,6 +76,21 @@ struct Mesh_cache
   int apex(int h) const { return corner_vertex[prev(h)]; }
   int opposite(int h) const { return opposite_halfedge[h]; }
   std::size_t number_of_halfedges() const { return corner_vertex.size(); }
+  /// The caller's vertex that vertex `v` of the cache is (itself, or the vertex it is a copy of).
+  int mesh_vertex(int v) const
+  {
+    return std::size_t(v) < number_of_mesh_vertices ? v : mesh_vertex_of_copy[std::size_t(v) - number_of_mesh_vertices];
+  }
+  bool is_glued(int v) const { return !next_glued.empty() && next_glued[std::size_t(v)] != v; }
+  /// Calls `f(u)` for every other vertex glued to `v`.
+  template <class Function>
+  void for_each_glued(int v, Function f) const
+  {
+    if(next_glued.empty())
+      return;
+    for(int u = next_glued[std::size_t(v)]; u != v; u = next_glued[std::size_t(u)])
+      f(u);
+  }
 
   /// The point of face(h) with barycentric coordinates b (in the order of the face's corners)
   /// in the frame of h: h's source at the origin, its target at (length, 0), the apex above.
@@ -88,15 +116,40 @@ struct Mesh_cache
   }
 
   /// Computes the frames, angles and flags once `position`, `corner_vertex` and
-  /// `opposite_halfedge` are set; throws `Geodesic_error` on a degenerate triangle or a
-  /// non-manifold vertex.
+  /// `opposite_halfedge` are set: splits non-manifold vertices into one copy per fan and glues
+  /// vertices that are one point. Throws `Geodesic_error` on a degenerate triangle.
   void finish();
+
+private:
+  void compute_frames();
+  void split_non_manifold_vertices(const std::vector<std::int32_t>& corner_count);
+  void glue_coincident_vertices();
+  void compute_vertex_flags();
 };
 
 inline void Mesh_cache::finish()
 {
+  number_of_mesh_vertices = position.size();
+  compute_frames();
+  // One outgoing half-edge per vertex, a border one when there is one, so that turning around
+  // the vertex from it meets every face of its fan.
+  first_outgoing.assign(position.size(), -1);
+  std::vector<std::int32_t> corner_count(position.size(), 0);
+  for(std::size_t h = 0; h < corner_vertex.size(); ++h) {
+    const int v = corner_vertex[h];
+    ++corner_count[v];
+    if(first_outgoing[v] < 0 || opposite_halfedge[h] < 0)
+      first_outgoing[v] = static_cast<std::int32_t>(h);
+  }
+  split_non_manifold_vertices(corner_count);
+  number_of_vertices = position.size();
+  glue_coincident_vertices();
+  compute_vertex_flags();
+}
+
+inline void Mesh_cache::compute_frames()
+{
   const std::size_t nh = corner_vertex.size();
-  const std::size_t nv = position.size();
   frame.resize(nh);
   corner_angle.resize(nh);
   double length_sum = 0;
@@ -142,38 +195,114 @@ inline void Mesh_cache::finish()
   }
   mean_edge_length = edge_count ? length_sum / double(edge_count) : 0.;
   mean_anisotropy = number_of_faces ? anisotropy_sum / double(number_of_faces) : 1.;
+}
 
-  // One outgoing half-edge per vertex, a border one when there is one, so that turning around
-  // the vertex from it meets every face of its umbrella.
-  first_outgoing.assign(nv, -1);
-  std::vector<std::int32_t> corner_count(nv, 0);
-  for(std::size_t h = 0; h < nh; ++h) {
-    const int v = corner_vertex[h];
-    ++corner_count[v];
-    if(first_outgoing[v] < 0 || opposite_halfedge[h] < 0)
-      first_outgoing[v] = static_cast<std::int32_t>(h);
+// A vertex whose corners do not all lie in the fan of its first outgoing half-edge keeps that
+// fan; each other fan gets a copy of the vertex (glued to it afterwards, being at its position).
+inline void Mesh_cache::split_non_manifold_vertices(const std::vector<std::int32_t>& corner_count)
+{
+  const std::size_t nv = position.size();
+  std::vector<std::uint8_t> is_split(nv, 0);
+  bool any = false;
+  for(std::size_t v = 0; v < nv; ++v) {
+    int reached = 0;
+    for_each_outgoing(int(v), [&](int) { ++reached; });
+    if(reached != corner_count[v])
+      is_split[v] = any = true;
   }
+  if(!any)
+    return;
+  std::vector<std::uint8_t> in_first_fan(corner_vertex.size(), 0);
+  for(std::size_t v = 0; v < nv; ++v)
+    if(is_split[v])
+      for_each_outgoing(int(v), [&](int h) { in_first_fan[std::size_t(h)] = 1; });
+  for(std::size_t h0 = 0; h0 < corner_vertex.size(); ++h0) {
+    const int v = corner_vertex[h0];
+    if(std::size_t(v) >= nv || !is_split[std::size_t(v)] || in_first_fan[h0])
+      continue;
+    // h0 starts a new fan: find its border half-edge, if any, by turning the other way
+    int start = int(h0);
+    for(int g = start;;) {
+      const int o = opposite_halfedge[std::size_t(g)];
+      if(o < 0) {
+        start = g;
+        break;
+      }
+      g = next(o);
+      if(g == int(h0))
+        break;
+    }
+    const int copy = int(position.size());
+    position.push_back(position[std::size_t(v)]);
+    mesh_vertex_of_copy.push_back(v);
+    first_outgoing.push_back(start);
+    for_each_outgoing(copy, [&](int h) { corner_vertex[std::size_t(h)] = copy; });
+  }
+}
+
+// Vertices at the same position (not isolated ones) are glued into one point of the surface.
+inline void Mesh_cache::glue_coincident_vertices()
+{
+  const std::size_t nv = position.size();
+  std::size_t size = 16;
+  while(size < 2 * nv)
+    size *= 2;
+  auto hash = [](const std::array<double, 3>& p) {
+    std::uint64_t h = 1469598103934665603ull;
+    for(double x : p) {
+      const double y = x == 0 ? 0. : x; // -0 and +0 are the same position
+      std::uint64_t bits;
+      std::memcpy(&bits, &y, sizeof bits);
+      h = (h ^ bits) * 1099511628211ull;
+      h ^= h >> 29;
+    }
+    return h;
+  };
+  std::vector<std::int32_t> table(size, -1);
+  std::vector<std::int32_t> next(nv);
+  std::size_t glued = 0;
+  for(std::size_t v = 0; v < nv; ++v) {
+    next[v] = std::int32_t(v);
+    if(first_outgoing[v] < 0)
+      continue;
+    std::size_t slot = std::size_t(hash(position[v])) & (size - 1);
+    for(;; slot = (slot + 1) & (size - 1)) {
+      const int u = table[slot];
+      if(u < 0) {
+        table[slot] = std::int32_t(v);
+        break;
+      }
+      if(position[std::size_t(u)] == position[v]) { // v joins the cycle of u
+        glued += next[std::size_t(u)] == u ? 2 : 1;
+        next[v] = next[std::size_t(u)];
+        next[std::size_t(u)] = std::int32_t(v);
+        break;
+      }
+    }
+  }
+  number_of_glued_vertices = glued;
+  if(glued)
+    next_glued = std::move(next);
+  else
+    next_glued.clear();
+}
+
+inline void Mesh_cache::compute_vertex_flags()
+{
+  const std::size_t nv = position.size();
   angle_sum.assign(nv, 0.);
   is_border_vertex.assign(nv, 0);
   is_pseudo_source.assign(nv, 0);
   const double two_pi = 2 * 3.14159265358979323846;
   for(std::size_t v = 0; v < nv; ++v) {
-    int reached = 0;
     double sum = 0;
-    for_each_outgoing(int(v), [&](int h) {
-      ++reached;
-      sum += corner_angle[h];
-    });
-    if(reached != corner_count[v]) {
-      std::ostringstream msg;
-      msg << "non-manifold vertex " << v << ": its " << corner_count[v]
-          << " incident faces form more than one fan";
-      throw Geodesic_error(msg.str());
-    }
+    for_each_outgoing(int(v), [&](int h) { sum += corner_angle[h]; });
     angle_sum[v] = sum;
     const int h0 = first_outgoing[v];
     is_border_vertex[v] = (h0 >= 0 && opposite_halfedge[h0] < 0) ? 1 : 0;
-    is_pseudo_source[v] = (is_border_vertex[v] || sum > two_pi - saddle_angle_tolerance) ? 1 : 0;
+    // a glued vertex passes paths on to the other fans through it, as a saddle does
+    is_pseudo_source[v] =
+      (is_border_vertex[v] || sum > two_pi - saddle_angle_tolerance || is_glued(int(v))) ? 1 : 0;
   }
 
   double lo[3] = {std::numeric_limits<double>::max(), std::numeric_limits<double>::max(),
@@ -187,9 +316,29 @@ inline void Mesh_cache::finish()
   bbox_diagonal = position.empty() ? 0. : std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
 }
 
+/// Divides the positions by a power of two (exactly) when the mesh is so large or so small that
+/// squared lengths would overflow or underflow: distances scale with the mesh.
+inline void scale_to_unit(Mesh_cache& cache)
+{
+  double largest = 0;
+  for(const auto& p : cache.position)
+    for(int i = 0; i < 3; ++i)
+      largest = std::max(largest, std::abs(p[i]));
+  // Coordinates within 2^-60 .. 2^60 (1e-18 .. 1e18) are left alone; the fourth powers of
+  // lengths that the solvers form stay within the range of doubles.
+  const double high = std::ldexp(1., 60), low = std::ldexp(1., -60);
+  if(!(largest > high || (largest < low && largest > 0)))
+    return;
+  const int exponent = std::ilogb(largest);
+  cache.unit = std::ldexp(1., exponent);
+  for(auto& p : cache.position)
+    for(int i = 0; i < 3; ++i)
+      p[i] = std::ldexp(p[i], -exponent);
+}
+
 /// Builds the cache of `tm`. Vertex `v` of `tm` becomes index `get(vim, v)`, face `f` becomes
 /// index `get(fim, f)`. Throws `Geodesic_error` for an empty mesh, a face that is not a triangle,
-/// a non-finite coordinate, a degenerate triangle or a non-manifold vertex.
+/// a non-finite coordinate or a degenerate triangle.
 template <class TriangleMesh, class VertexPointMap, class VertexIndexMap, class FaceIndexMap>
 void build_mesh_cache(const TriangleMesh& tm, VertexPointMap vpm, VertexIndexMap vim,
                       FaceIndexMap fim, Mesh_cache& cache)
@@ -229,6 +378,7 @@ void build_mesh_cache(const TriangleMesh& tm, VertexPointMap vpm, VertexIndexMap
     }
     cache.position[i] = {x, y, z};
   }
+  scale_to_unit(cache);
 
   auto local_index = get(CGAL::dynamic_halfedge_property_t<int>(), tm);
   cache.corner_vertex.assign(3 * nf, -1);

@@ -32,8 +32,9 @@ public:
 
   const Mesh_cache& mesh() const { return m_mesh; }
   const std::vector<Source_point>& sources() const { return m_sources; }
-  /// The distance of every vertex (+infinity where no source reaches).
+  /// The distance of every vertex (+infinity where no source reaches), in the cache's unit.
   const std::vector<double>& distances() const { return m_distance; }
+  /// In the cache's unit.
   double max_distance() const { return m_max_distance; }
   const Geodesic_statistics& statistics() const { return m_statistics; }
 
@@ -46,8 +47,8 @@ protected:
     : m_mesh(mesh)
     , m_distance(mesh.number_of_vertices, infinity())
     , m_emitted(mesh.number_of_vertices, infinity())
-    , m_max_distance(settings.max_distance)
-    , m_window_limit(settings.max_distance)
+    , m_max_distance(settings.max_distance / mesh.unit)
+    , m_window_limit(settings.max_distance / mesh.unit)
     , m_min_window_length(min_window_length_ratio * mesh.mean_edge_length)
     , m_batch_size(settings.batch_size)
     , m_parallel(parallel)
@@ -83,7 +84,7 @@ protected:
   void finish_statistics(const Pool& pool, Clock::time_point start)
   {
     note_live_windows(pool);
-    m_statistics.vertices = m_mesh.number_of_vertices;
+    m_statistics.vertices = m_mesh.number_of_mesh_vertices;
     m_statistics.faces = m_mesh.number_of_faces;
     m_statistics.peak_windows = m_peak_windows;
     m_statistics.peak_window_bytes = pool.bytes();

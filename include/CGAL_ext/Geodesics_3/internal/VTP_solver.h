@@ -150,13 +150,20 @@ private:
   void relax(int v, double d)
   {
     if(d < m_distance[v]) {
-      m_distance[v] = d;
-      if(!m_is_taken[v] || m_emits_when_taken[v]) {
-        if(m_batched)
-          m_buckets.push(d, v);
-        else
-          m_heap.push(d, v);
-      }
+      set_distance(v, d);
+      if(m_mesh.is_glued(v))
+        m_mesh.for_each_glued(v, [&](int u) { set_distance(u, d); });
+    }
+  }
+
+  void set_distance(int v, double d)
+  {
+    m_distance[v] = d;
+    if(!m_is_taken[v] || m_emits_when_taken[v]) {
+      if(m_batched)
+        m_buckets.push(d, v);
+      else
+        m_heap.push(d, v);
     }
   }
 
