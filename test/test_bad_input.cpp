@@ -203,40 +203,5 @@ TEST(BadInput, UnknownAlgorithm)
     {"unknown geodesic algorithm 7"}));
 }
 
-// Non-manifold vertices. Surface_mesh represents a vertex whose faces form several fans when
-// each fan is open (add_face refuses to attach a face to a vertex that is not on the border):
-// two triangles sharing only a vertex (a bowtie), or two cones sharing their apex. Such a
-// vertex is pinched: its neighbourhood is not a disk, and the solver rejects it.
-TEST(BadInput, PinchedVertexBowtie)
-{
-  const Mesh m = mesh_from_soup({Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(-1, 0, 0), Point(0, -1, 0)},
-                                {{0, 1, 2}, {0, 3, 4}});
-  ASSERT_EQ(m.number_of_faces(), 2u);
-  EXPECT_TRUE(throws_geodesic_error([&] { solve_quietly(m); }, {"non-manifold vertex 0"}));
-}
-
-TEST(BadInput, PinchedVertexTwoConesInAMesh)
-{
-  // the 6 x 6 grid with a second, open fan of 4 triangles hanging from its interior vertex 14
-  // is refused by Surface_mesh (vertex 14 is not on the border); hang it from the border
-  // vertex 3 instead, whose own fan is open
-  Mesh m = small_grid();
-  const Vertex apex(3);
-  ASSERT_TRUE(m.is_border(apex));
-  std::vector<Vertex> ring;
-  for(int k = 0; k < 5; ++k)
-    ring.push_back(m.add_vertex(Point(3 + 0.5 * std::cos(0.5 * k), 0.5 * std::sin(0.5 * k), 1)));
-  for(int k = 0; k + 1 < 5; ++k)
-    ASSERT_TRUE(m.add_face(apex, ring[k], ring[k + 1]).is_valid());
-  EXPECT_TRUE(throws_geodesic_error([&] { solve_quietly(m); }, {"non-manifold vertex 3"}));
-  // and Surface_mesh indeed refuses a second fan at an interior vertex
-  const Vertex interior(14), p = m.add_vertex(Point(2, 2, 1)), q = m.add_vertex(Point(2.5, 2, 1));
-  EXPECT_FALSE(m.add_face(interior, p, q).is_valid());
-}
-
-// A closed pinched vertex (two closed fans, e.g. two tetrahedra glued at a corner) cannot be
-// represented: Surface_mesh::add_face refuses a fan at a vertex that is not on the border (checked
-// above), and Polyhedron_incremental_builder_3 refuses it too ("at vertex 0 a closed surface
-// already exists and facet 4 is nonetheless adjacent"). That case is therefore not tested.
 
 } // namespace

@@ -30,7 +30,7 @@ double polyline_length(const PointRange& points)
     const double dx = CGAL::to_double(p->x()) - CGAL::to_double(previous->x());
     const double dy = CGAL::to_double(p->y()) - CGAL::to_double(previous->y());
     const double dz = CGAL::to_double(p->z()) - CGAL::to_double(previous->z());
-    length += std::sqrt(dx * dx + dy * dy + dz * dz);
+    length += std::hypot(dx, dy, dz); // no overflow or underflow at any scale
   }
   return length;
 }

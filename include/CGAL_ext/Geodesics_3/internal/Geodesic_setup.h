@@ -81,7 +81,7 @@ public:
     const auto start = std::chrono::steady_clock::now();
     const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
     const auto fim = CGAL::get_initialized_face_index_map(tm, np);
-    build_mesh_cache(tm, m_vpm, vim, fim, *m_cache);
+    build_mesh_cache(tm, m_vpm, vim, fim, *m_cache, glued_groups(tm, np, vim));
     m_vertex_of_index.resize(m_cache->number_of_mesh_vertices);
     m_face_of_index.resize(m_cache->number_of_faces);
     for(vertex_descriptor v : vertices(tm))
@@ -162,6 +162,28 @@ public:
   double to_mesh_unit(double d) const { return d * m_cache->unit; }
 
 private:
+  // The named parameter `glued_vertices` (a range of ranges of vertices), in indices, checked.
+  template <class NamedParameters, class VertexIndexMap>
+  static std::vector<std::vector<int>> glued_groups(const TriangleMesh& tm, const NamedParameters& np,
+                                                    const VertexIndexMap& vim)
+  {
+    std::vector<std::vector<int>> groups;
+    if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::glued_vertices_t>::value) {
+      const long long n = static_cast<long long>(num_vertices(tm));
+      for(const auto& group : CGAL::parameters::get_parameter(np, internal_np::glued_vertices)) {
+        groups.emplace_back();
+        for(vertex_descriptor v : group) {
+          const long long i = static_cast<long long>(get(vim, v));
+          if(i < 0 || i >= n)
+            throw Geodesic_error("glued vertex index " + std::to_string(i) + " is out of range [0, " +
+                                 std::to_string(n) + ")");
+          groups.back().push_back(int(i));
+        }
+      }
+    }
+    return groups;
+  }
+
   const TriangleMesh* m_tm; // a pointer, so that the object can be moved
   VertexPointMap m_vpm;
   std::unique_ptr<Mesh_cache> m_cache;

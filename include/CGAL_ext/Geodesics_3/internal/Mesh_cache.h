@@ -14,7 +14,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
+#include <numeric>
 #include <limits>
 #include <sstream>
 #include <string>
@@ -56,9 +56,9 @@ struct Mesh_cache
   // fan, and each other fan gets a copy numbered from number_of_mesh_vertices on.
   std::size_t number_of_mesh_vertices = 0;
   std::vector<std::int32_t> mesh_vertex_of_copy; // per copy
-  // Glued vertices are one point of the surface (the copies of a non-manifold vertex, and
-  // vertices at the same position): per vertex, the next one of its group, in a cycle. Empty
-  // when no vertex is glued.
+  // Glued vertices are one point of the surface (the copies of a non-manifold vertex, and the
+  // vertices the caller says are one point): per vertex, the next one of its group, in a cycle.
+  // Empty when no vertex is glued.
   std::vector<std::int32_t> next_glued;
   std::size_t number_of_glued_vertices = 0;
   // Positions are stored divided by `unit`, a power of two (1 unless the mesh is very large or
@@ -116,18 +116,19 @@ struct Mesh_cache
   }
 
   /// Computes the frames, angles and flags once `position`, `corner_vertex` and
-  /// `opposite_halfedge` are set: splits non-manifold vertices into one copy per fan and glues
-  /// vertices that are one point. Throws `Geodesic_error` on a degenerate triangle.
-  void finish();
+  /// `opposite_halfedge` are set: splits non-manifold vertices into one copy per fan, and glues
+  /// the copies and the vertices of each of `glued_groups` (the caller's indices, checked).
+  /// Throws `Geodesic_error` on a degenerate triangle.
+  void finish(const std::vector<std::vector<int>>& glued_groups = {});
 
 private:
   void compute_frames();
   void split_non_manifold_vertices(const std::vector<std::int32_t>& corner_count);
-  void glue_coincident_vertices();
+  void glue_vertices(const std::vector<std::vector<int>>& groups);
   void compute_vertex_flags();
 };
 
-inline void Mesh_cache::finish()
+inline void Mesh_cache::finish(const std::vector<std::vector<int>>& glued_groups)
 {
   number_of_mesh_vertices = position.size();
   compute_frames();
@@ -143,7 +144,7 @@ inline void Mesh_cache::finish()
   }
   split_non_manifold_vertices(corner_count);
   number_of_vertices = position.size();
-  glue_coincident_vertices();
+  glue_vertices(glued_groups);
   compute_vertex_flags();
 }
 
@@ -240,50 +241,44 @@ inline void Mesh_cache::split_non_manifold_vertices(const std::vector<std::int32
   }
 }
 
-// Vertices at the same position (not isolated ones) are glued into one point of the surface.
-inline void Mesh_cache::glue_coincident_vertices()
+// Each copy made by `split_non_manifold_vertices` is glued to its vertex, and the vertices of
+// each of `groups` (indices checked by the caller) to each other.
+inline void Mesh_cache::glue_vertices(const std::vector<std::vector<int>>& groups)
 {
+  next_glued.clear();
+  number_of_glued_vertices = 0;
+  if(mesh_vertex_of_copy.empty() && groups.empty())
+    return;
   const std::size_t nv = position.size();
-  std::size_t size = 16;
-  while(size < 2 * nv)
-    size *= 2;
-  auto hash = [](const std::array<double, 3>& p) {
-    std::uint64_t h = 1469598103934665603ull;
-    for(double x : p) {
-      const double y = x == 0 ? 0. : x; // -0 and +0 are the same position
-      std::uint64_t bits;
-      std::memcpy(&bits, &y, sizeof bits);
-      h = (h ^ bits) * 1099511628211ull;
-      h ^= h >> 29;
-    }
-    return h;
+  std::vector<std::int32_t> root(nv);
+  std::iota(root.begin(), root.end(), 0);
+  auto find = [&](int v) {
+    while(root[std::size_t(v)] != v)
+      v = root[std::size_t(v)] = root[std::size_t(root[std::size_t(v)])];
+    return v;
   };
-  std::vector<std::int32_t> table(size, -1);
-  std::vector<std::int32_t> next(nv);
-  std::size_t glued = 0;
+  auto unite = [&](int a, int b) { root[std::size_t(find(a))] = find(b); };
+  for(std::size_t c = 0; c < mesh_vertex_of_copy.size(); ++c)
+    unite(int(number_of_mesh_vertices + c), mesh_vertex_of_copy[c]);
+  for(const std::vector<int>& group : groups)
+    for(std::size_t i = 1; i < group.size(); ++i)
+      unite(group[i], group[0]); // a split vertex brings its copies along
+  // each class becomes a cycle through next_glued, in index order
+  std::vector<std::int32_t> last(nv, -1);
+  next_glued.resize(nv);
   for(std::size_t v = 0; v < nv; ++v) {
-    next[v] = std::int32_t(v);
-    if(first_outgoing[v] < 0)
-      continue;
-    std::size_t slot = std::size_t(hash(position[v])) & (size - 1);
-    for(;; slot = (slot + 1) & (size - 1)) {
-      const int u = table[slot];
-      if(u < 0) {
-        table[slot] = std::int32_t(v);
-        break;
-      }
-      if(position[std::size_t(u)] == position[v]) { // v joins the cycle of u
-        glued += next[std::size_t(u)] == u ? 2 : 1;
-        next[v] = next[std::size_t(u)];
-        next[std::size_t(u)] = std::int32_t(v);
-        break;
-      }
+    const int r = find(int(v));
+    next_glued[v] = std::int32_t(v);
+    if(last[std::size_t(r)] >= 0) {
+      const int previous = last[std::size_t(r)];
+      next_glued[v] = next_glued[std::size_t(previous)];
+      next_glued[std::size_t(previous)] = std::int32_t(v);
     }
+    last[std::size_t(r)] = std::int32_t(v);
   }
-  number_of_glued_vertices = glued;
-  if(glued)
-    next_glued = std::move(next);
-  else
+  for(std::size_t v = 0; v < nv; ++v)
+    number_of_glued_vertices += next_glued[v] != std::int32_t(v);
+  if(number_of_glued_vertices == 0)
     next_glued.clear();
 }
 
@@ -341,7 +336,8 @@ inline void scale_to_unit(Mesh_cache& cache)
 /// a non-finite coordinate or a degenerate triangle.
 template <class TriangleMesh, class VertexPointMap, class VertexIndexMap, class FaceIndexMap>
 void build_mesh_cache(const TriangleMesh& tm, VertexPointMap vpm, VertexIndexMap vim,
-                      FaceIndexMap fim, Mesh_cache& cache)
+                      FaceIndexMap fim, Mesh_cache& cache,
+                      const std::vector<std::vector<int>>& glued_groups = {})
 {
   typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
   const std::size_t nv = static_cast<std::size_t>(num_vertices(tm));
@@ -405,7 +401,7 @@ void build_mesh_cache(const TriangleMesh& tm, VertexPointMap vpm, VertexIndexMap
         cache.opposite_halfedge[get(local_index, h)] = get(local_index, o);
     }
   }
-  cache.finish();
+  cache.finish(glued_groups);
 }
 
 } // namespace internal
