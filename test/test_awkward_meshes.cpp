@@ -1,6 +1,7 @@
 // Copyright (c) 2026 The CGAL_ext geodesics developers.
 // Meshes as users have them, solved exactly: non-manifold (pinched) vertices, vertices the
-// caller glues into one point, and coordinates of any scale.
+// caller glues into one point, degenerate (zero-area) triangles, isolated vertices, and
+// coordinates of any scale.
 
 #include "support/analytic_surfaces.h"
 #include "support/checks.h"
@@ -9,6 +10,7 @@
 #include <CGAL_ext/Surface_mesh_geodesic_paths.h>
 #include <CGAL_ext/Geodesics_3/polyline_length.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <string>
@@ -215,6 +217,198 @@ TEST(AnyScale, PathPointsAreInTheMeshsCoordinates)
   EXPECT_EQ(points.front(), t.point(Vertex(0)));
   EXPECT_EQ(points.back(), t.point(Vertex(1000)));
   EXPECT_NEAR(CGAL_ext::polyline_length(points) / double(paths.distance(Vertex(1000))), 1., 1e-9);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Degenerate triangles on a flat grid: the domain stays the square, so distances are Euclidean.
+
+std::vector<double> euclidean_from(const Mesh& m, Vertex s)
+{
+  std::vector<double> d;
+  for(Vertex v : m.vertices())
+    d.push_back(distance_3(m.point(s), m.point(v)));
+  return d;
+}
+
+void expect_euclidean(const Mesh& m, const std::string& what)
+{
+  for(const auto& [name, d] : solve_all(m, {Vertex(0)}, params::default_values()))
+    EXPECT_TRUE(agrees(d, euclidean_from(m, Vertex(0)), bbox_diagonal(m), 1e-12, what + " " + name));
+}
+
+TEST(DegenerateTriangles, CapOnAGrid)
+{
+  Mesh m = make_grid(6, 1.);
+  const Vertex v(14); // interior: moved onto the middle of the far edge of one of its faces
+  const auto c = face_corners(m, m.face(m.halfedge(v)));
+  std::vector<Vertex> others;
+  for(Vertex w : c)
+    if(w != v)
+      others.push_back(w);
+  m.point(v) = CGAL::midpoint(m.point(others[0]), m.point(others[1]));
+  ASSERT_TRUE(CGAL::collinear(m.point(c[0]), m.point(c[1]), m.point(c[2])));
+  expect_euclidean(m, "cap");
+}
+
+TEST(DegenerateTriangles, ZeroLengthEdgeOnAGrid)
+{
+  Mesh m = make_grid(6, 1.);
+  const Vertex v(14), w(15);
+  ASSERT_TRUE(m.halfedge(v, w).is_valid());
+  m.point(v) = m.point(w); // two needles
+  expect_euclidean(m, "zero-length edge");
+}
+
+TEST(DegenerateTriangles, NearlyZeroLengthEdgeOnAGrid)
+{
+  Mesh m = make_grid(6, 1.);
+  const Vertex v(14), w(15);
+  m.point(v) = Point(m.point(w).x() + 1e-14, m.point(w).y(), 0);
+  expect_euclidean(m, "edge of length 1e-14");
+}
+
+TEST(DegenerateTriangles, FaceShrunkToAPointOnAGrid)
+{
+  Mesh m = make_grid(6, 1.);
+  const auto c = face_corners(m, m.face(m.halfedge(Vertex(14))));
+  for(Vertex w : c)
+    m.point(w) = m.point(Vertex(14));
+  expect_euclidean(m, "a face shrunk to a point");
+}
+
+// In a real mesh: an edge (a, b) cut at its midpoint m. The reference splits both faces on the
+// edge at m; the degenerate version keeps one of them whole and closes the gap with the
+// zero-area cap (b, m, a). Same surface, same vertices: same distances, and a point of the face
+// kept whole is found in the cap's neighbour.
+struct Cut_edge
+{
+  Mesh with_cap, reference;
+  Face kept_face; // (b, a, x) in the mesh with the cap
+  Vertex a, b, x, middle;
+};
+
+Cut_edge cut_an_edge(const Mesh& m, Mesh::Halfedge_index h)
+{
+  std::vector<Point> points;
+  for(Vertex v : m.vertices())
+    points.push_back(m.point(v));
+  Cut_edge cut;
+  cut.a = m.source(h);
+  cut.b = m.target(h);
+  const Vertex y = m.target(m.next(h)), x = m.target(m.next(m.opposite(h)));
+  cut.x = x;
+  cut.middle = Vertex(std::uint32_t(points.size()));
+  points.push_back(CGAL::midpoint(m.point(cut.a), m.point(cut.b)));
+  const int a = int(cut.a.idx()), b = int(cut.b.idx()), mid = int(cut.middle.idx());
+  std::vector<Triangle> common, with_cap, reference;
+  for(Face f : m.faces())
+    if(f != m.face(h) && f != m.face(m.opposite(h))) {
+      const auto c = face_corners(m, f);
+      common.push_back({int(c[0].idx()), int(c[1].idx()), int(c[2].idx())});
+    }
+  // the face of h, (a, b, y), is split at m in both
+  common.push_back({a, mid, int(y.idx())});
+  common.push_back({mid, b, int(y.idx())});
+  reference = with_cap = common;
+  reference.push_back({b, mid, int(x.idx())});
+  reference.push_back({mid, a, int(x.idx())});
+  with_cap.push_back({b, a, int(x.idx())});
+  with_cap.push_back({b, mid, a});
+  cut.reference = mesh_from_soup(points, reference);
+  cut.with_cap = mesh_from_soup(points, with_cap);
+  cut.kept_face = Face(std::uint32_t(with_cap.size() - 2));
+  return cut;
+}
+
+TEST(DegenerateTriangles, CapInARealMeshMatchesTheSplitMesh)
+{
+  const Mesh& elephant = test_mesh("elephant");
+  const Cut_edge cut = cut_an_edge(elephant, elephant.halfedge(Face(100)));
+  const double diag = bbox_diagonal(elephant);
+  const std::vector<double> reference = solve(cut.reference, Vertex(0));
+  for(const auto& [name, d] : solve_all(cut.with_cap, {Vertex(0)}, params::default_values()))
+    EXPECT_TRUE(agrees(d, reference, diag, 1e-12, "cap in the elephant, " + name));
+
+  // a source in the face kept whole, (b, a, x) = 0.2 b + 0.3 a + 0.5 x, is the point
+  // (0.4, 0.1, 0.5) of (m, a, x) in the reference
+  const auto corners = face_corners(cut.with_cap, cut.kept_face);
+  Barycentric in_kept{{0., 0., 0.}};
+  for(int k = 0; k < 3; ++k)
+    in_kept[k] = corners[k] == cut.b ? 0.2 : (corners[k] == cut.a ? 0.3 : 0.5);
+  Face in_reference;
+  for(Face f : cut.reference.faces()) {
+    const auto c = face_corners(cut.reference, f);
+    if(std::count(c.begin(), c.end(), cut.middle) && std::count(c.begin(), c.end(), cut.a) &&
+       std::count(c.begin(), c.end(), cut.x))
+      in_reference = f;
+  }
+  ASSERT_TRUE(in_reference.is_valid());
+  const auto rc = face_corners(cut.reference, in_reference);
+  Barycentric in_ref{{0., 0., 0.}};
+  for(int k = 0; k < 3; ++k)
+    in_ref[k] = rc[k] == cut.middle ? 0.4 : (rc[k] == cut.a ? 0.1 : 0.5);
+  const std::vector<double> from_point_reference = solve(cut.reference, std::vector<Face_location>{{in_reference, in_ref}});
+  const std::vector<double> from_point =
+    solve(cut.with_cap, std::vector<Face_location>{{cut.kept_face, in_kept}});
+  EXPECT_TRUE(agrees(from_point, from_point_reference, diag, 1e-12, "from a point of the face kept whole"));
+
+  // the path to that point: as long as its distance, and its last point is the point
+  CGAL_ext::Surface_mesh_geodesic_paths<Mesh> paths(cut.with_cap);
+  paths.add_source(Vertex(0));
+  paths.build();
+  std::vector<Point> points;
+  const Face_location target{cut.kept_face, in_kept};
+  paths.shortest_path_points(target, std::back_inserter(points));
+  ASSERT_GE(points.size(), 2u);
+  EXPECT_LT(distance_3(points.back(), location_point(cut.with_cap, target)), 1e-12 * diag);
+  EXPECT_NEAR(CGAL_ext::polyline_length(points), double(paths.distance(target)), 1e-12 * diag);
+}
+
+// In a real mesh: vertex b moved onto its neighbour a makes two needles; the reference is the
+// mesh with the edge collapsed (b's faces given to a, the two needles gone, b left isolated).
+TEST(DegenerateTriangles, ZeroLengthEdgeInARealMeshMatchesTheCollapsedMesh)
+{
+  const Mesh& elephant = test_mesh("elephant");
+  const Mesh::Halfedge_index h = elephant.halfedge(Face(200));
+  const Vertex a = elephant.source(h), b = elephant.target(h);
+  std::vector<Point> points;
+  for(Vertex v : elephant.vertices())
+    points.push_back(v == b ? elephant.point(a) : elephant.point(v));
+  std::vector<Triangle> needles, collapsed;
+  for(Face f : elephant.faces()) {
+    const auto c = face_corners(elephant, f);
+    Triangle t{int(c[0].idx()), int(c[1].idx()), int(c[2].idx())};
+    needles.push_back(t);
+    if(std::count(c.begin(), c.end(), a) && std::count(c.begin(), c.end(), b))
+      continue;
+    for(int& i : t)
+      if(i == int(b.idx()))
+        i = int(a.idx());
+    collapsed.push_back(t);
+  }
+  const Mesh with_needles = mesh_from_soup(points, needles), reference = mesh_from_soup(points, collapsed);
+  std::vector<double> expected = solve(reference, Vertex(0));
+  ASSERT_EQ(expected[b.idx()], inf); // isolated in the reference
+  expected[b.idx()] = expected[a.idx()];
+  for(const auto& [name, d] : solve_all(with_needles, {Vertex(0)}, params::default_values()))
+    EXPECT_TRUE(agrees(d, expected, bbox_diagonal(elephant), 1e-12, "needles in the elephant, " + name));
+}
+
+// ---------------------------------------------------------------------------------------------
+// Isolated vertices: +infinity, and no source on their own.
+
+TEST(IsolatedVertex, IsUnreachedAndCannotBeTheOnlySource)
+{
+  Mesh m = make_grid(4, 1.);
+  const Vertex lonely = m.add_vertex(Point(10, 10, 0));
+  for(const auto& [name, d] : solve_all(m, {Vertex(0)}, params::default_values()))
+    EXPECT_EQ(d[lonely.idx()], inf) << name;
+  EXPECT_TRUE(throws_geodesic_error([&] { solve(m, lonely); }, {"source vertex 16", "isolated"}));
+  EXPECT_TRUE(throws_geodesic_error([&] { solve(m, lonely, params::algorithm(CGAL_ext::MMP)); }, {"isolated"}));
+  // with another source, it is just one more source
+  const std::vector<double> d = solve(m, std::vector<Vertex>{lonely, Vertex(0)});
+  EXPECT_EQ(d[lonely.idx()], 0.);
+  EXPECT_EQ(d[5], std::sqrt(2.));
 }
 
 } // namespace

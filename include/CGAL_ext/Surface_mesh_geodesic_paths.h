@@ -224,7 +224,7 @@ public:
     namespace internal = Geodesics_3::internal;
     // (CGAL::Parallel_if_available_tag is CGAL::Parallel_tag when TBB is linked)
     constexpr bool parallel = std::is_same<ConcurrencyTag, CGAL::Parallel_tag>::value;
-    internal::check_has_sources(m_sources);
+    internal::check_has_sources(m_mesh.cache(), m_sources);
     const internal::Solver_settings settings = internal::read_solver_settings(np, FWP_MMP);
     if(settings.algorithm == VTP)
       throw Geodesic_error("Surface_mesh_geodesic_paths builds with MMP or FWP_MMP only, got algorithm VTP");
@@ -391,7 +391,18 @@ private:
       p.point = get(m_mesh.vertex_point_map(), p.vertex);
       return p;
     }
-    if(l.kind == Location::EDGE) {
+    const std::array<double, 3> x = m_tracer->position(l);
+    const Geodesics_3::internal::Mesh_cache& cache = m_mesh.cache();
+    if(cache.is_face_changed(l.kind == Location::EDGE ? l.halfedge / 3 : l.face)) {
+      // a face the cache split (at a degenerate neighbour): a point of the caller's face
+      int f;
+      std::array<double, 3> b;
+      cache.mesh_face_point(l.kind == Location::EDGE ? l.halfedge / 3 : l.face, x, f, b);
+      p.kind = Path_point::FACE;
+      p.face = m_mesh.face_of(f);
+      for(int k = 0; k < 3; ++k)
+        p.barycentric[k] = FT(b[k]);
+    } else if(l.kind == Location::EDGE) {
       p.halfedge = m_mesh.halfedge_of(l.halfedge);
       p.t = FT(l.t);
     } else {
@@ -399,7 +410,6 @@ private:
       for(int k = 0; k < 3; ++k)
         p.barycentric[k] = FT(l.barycentric[k]);
     }
-    const std::array<double, 3> x = m_tracer->position(l);
     p.point = Point_3(m_mesh.to_mesh_unit(x[0]), m_mesh.to_mesh_unit(x[1]), m_mesh.to_mesh_unit(x[2]));
     return p;
   }

@@ -87,7 +87,8 @@ public:
   /// an edge point when it lies on one.
   Surface_location locate(int face, const std::array<double, 3>& coordinates) const
   {
-    const std::array<double, 3> b = checked_barycentric(m_mesh, face, coordinates, "target");
+    std::array<double, 3> b = checked_barycentric(m_mesh, face, coordinates, "target");
+    m_mesh.relocate_face_point(face, b);
     const int zeros = (b[0] == 0) + (b[1] == 0) + (b[2] == 0);
     for(int k = 0; k < 3; ++k) {
       if(zeros == 2 && b[k] > 0)

@@ -83,7 +83,7 @@ public:
     const auto fim = CGAL::get_initialized_face_index_map(tm, np);
     build_mesh_cache(tm, m_vpm, vim, fim, *m_cache, glued_groups(tm, np, vim));
     m_vertex_of_index.resize(m_cache->number_of_mesh_vertices);
-    m_face_of_index.resize(m_cache->number_of_faces);
+    m_face_of_index.resize(m_cache->number_of_mesh_faces);
     for(vertex_descriptor v : vertices(tm))
       m_vertex_of_index[std::size_t(get(vim, v))] = v;
     for(face_descriptor f : faces(tm))
@@ -104,8 +104,10 @@ public:
   // (named *_of so that they hide none of the graph's free functions, found by ADL)
   /// The vertex of cache index i (a copy of a non-manifold vertex gives that vertex).
   vertex_descriptor vertex_of(int i) const { return m_vertex_of_index[std::size_t(m_cache->mesh_vertex(i))]; }
-  face_descriptor face_of(int i) const { return m_face_of_index[std::size_t(i)]; }
-  /// The descriptor of cache half-edge 3f+k: the k-th after `halfedge(f)` (the cache's corner order).
+  /// The face of cache index i (a face the cache added gives the face it lies in).
+  face_descriptor face_of(int i) const { return m_face_of_index[std::size_t(m_cache->mesh_face(i))]; }
+  /// The descriptor of cache half-edge 3f+k: the k-th after `halfedge(f)` (the cache's corner
+  /// order); f is a face the cache did not change.
   halfedge_descriptor halfedge_of(int h) const
   {
     halfedge_descriptor d = halfedge(face_of(h / 3), *m_tm);

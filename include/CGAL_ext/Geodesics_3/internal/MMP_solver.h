@@ -76,7 +76,7 @@ public:
   void run()
   {
     const auto start = Clock::now();
-    check_has_sources(m_sources);
+    check_has_sources(m_mesh, m_sources);
     m_main_slot = m_windows.use_one_slot_per_thread(m_parallel);
     start_from_sources();
     if(m_parallel)

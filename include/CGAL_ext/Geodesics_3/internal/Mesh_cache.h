@@ -61,6 +61,16 @@ struct Mesh_cache
   // Empty when no vertex is glued.
   std::vector<std::int32_t> next_glued;
   std::size_t number_of_glued_vertices = 0;
+  // Faces [0, number_of_mesh_faces) are the caller's. A degenerate (zero-area) face is removed:
+  // a cap (its middle vertex on its longest edge) by splitting the face beyond that edge at the
+  // middle vertex, which adds a face numbered from number_of_mesh_faces on; a needle (an edge of
+  // zero length) by gluing the ends of that edge and making its two other neighbours adjacent.
+  std::size_t number_of_mesh_faces = 0;
+  std::vector<std::int32_t> mesh_face_of_added; // per added face
+  std::vector<std::uint8_t> face_state;          // per face: 0 as given, or changed/removed; empty when none is
+  std::vector<std::int32_t> mesh_corner_vertex;  // the caller's corners, kept when a face changed
+  static constexpr std::uint8_t face_changed = 1, face_removed = 2;
+
   // Positions are stored divided by `unit`, a power of two (1 unless the mesh is very large or
   // very small), and every length inside the solvers is in that unit.
   double unit = 1;
@@ -81,6 +91,20 @@ struct Mesh_cache
   {
     return std::size_t(v) < number_of_mesh_vertices ? v : mesh_vertex_of_copy[std::size_t(v) - number_of_mesh_vertices];
   }
+  /// The caller's face that face `f` of the cache is, or lies in.
+  int mesh_face(int f) const
+  {
+    return std::size_t(f) < number_of_mesh_faces ? f : mesh_face_of_added[std::size_t(f) - number_of_mesh_faces];
+  }
+  bool is_face_changed(int f) const { return !face_state.empty() && face_state[std::size_t(f)] != 0; }
+  bool is_face_removed(int f) const { return !face_state.empty() && (face_state[std::size_t(f)] & face_removed); }
+
+  /// A point of the caller's face `f` (barycentric coordinates `b` in its corner order) as a
+  /// point of a face of the cache: itself unless the face was changed or removed.
+  void relocate_face_point(int& f, std::array<double, 3>& b) const;
+  /// The caller's face and barycentric coordinates of point `p` (cache unit) of cache face `f`.
+  void mesh_face_point(int f, const std::array<double, 3>& p, int& mesh_f, std::array<double, 3>& mesh_b) const;
+
   bool is_glued(int v) const { return !next_glued.empty() && next_glued[std::size_t(v)] != v; }
   /// Calls `f(u)` for every other vertex glued to `v`.
   template <class Function>
@@ -118,10 +142,12 @@ struct Mesh_cache
   /// Computes the frames, angles and flags once `position`, `corner_vertex` and
   /// `opposite_halfedge` are set: splits non-manifold vertices into one copy per fan, and glues
   /// the copies and the vertices of each of `glued_groups` (the caller's indices, checked).
-  /// Throws `Geodesic_error` on a degenerate triangle.
+  /// Removes degenerate triangles (see `face_state`).
   void finish(const std::vector<std::vector<int>>& glued_groups = {});
 
 private:
+  void remove_degenerate_faces(std::vector<std::vector<int>>& glued_groups);
+  void split_face_at(int y, int c);
   void compute_frames();
   void split_non_manifold_vertices(const std::vector<std::int32_t>& corner_count);
   void glue_vertices(const std::vector<std::vector<int>>& groups);
@@ -131,12 +157,18 @@ private:
 inline void Mesh_cache::finish(const std::vector<std::vector<int>>& glued_groups)
 {
   number_of_mesh_vertices = position.size();
+  number_of_mesh_faces = number_of_faces;
+  std::vector<std::vector<int>> groups = glued_groups;
+  remove_degenerate_faces(groups);
+  number_of_faces = corner_vertex.size() / 3;
   compute_frames();
   // One outgoing half-edge per vertex, a border one when there is one, so that turning around
   // the vertex from it meets every face of its fan.
   first_outgoing.assign(position.size(), -1);
   std::vector<std::int32_t> corner_count(position.size(), 0);
   for(std::size_t h = 0; h < corner_vertex.size(); ++h) {
+    if(is_face_removed(face(int(h))))
+      continue;
     const int v = corner_vertex[h];
     ++corner_count[v];
     if(first_outgoing[v] < 0 || opposite_halfedge[h] < 0)
@@ -144,7 +176,7 @@ inline void Mesh_cache::finish(const std::vector<std::vector<int>>& glued_groups
   }
   split_non_manifold_vertices(corner_count);
   number_of_vertices = position.size();
-  glue_vertices(glued_groups);
+  glue_vertices(groups);
   compute_vertex_flags();
 }
 
@@ -157,6 +189,8 @@ inline void Mesh_cache::compute_frames()
   std::size_t edge_count = 0;
   double anisotropy_sum = 0;
   for(std::size_t f = 0; f < number_of_faces; ++f) {
+    if(is_face_removed(int(f)))
+      continue;
     const std::array<double, 3>* p[3];
     for(int k = 0; k < 3; ++k)
       p[k] = &position[corner_vertex[3 * f + k]];
@@ -171,16 +205,6 @@ inline void Mesh_cache::compute_frames()
       const double len = std::sqrt(ab[0] * ab[0] + ab[1] * ab[1] + ab[2] * ab[2]);
       const double twice_area = std::sqrt(cr[0] * cr[0] + cr[1] * cr[1] + cr[2] * cr[2]);
       const double dot = ab[0] * ac[0] + ab[1] * ac[1] + ab[2] * ac[2];
-      const double longest =
-        std::max({len, std::sqrt(ac[0] * ac[0] + ac[1] * ac[1] + ac[2] * ac[2]),
-                  std::hypot(c[0] - b[0], c[1] - b[1], c[2] - b[2])});
-      if(!(len > 0) || !(twice_area > degenerate_height_ratio * longest * longest)) {
-        std::ostringstream msg;
-        msg << "degenerate (zero-area) triangle: face " << f << " (vertices "
-            << corner_vertex[3 * f] << ", " << corner_vertex[3 * f + 1] << ", "
-            << corner_vertex[3 * f + 2] << ")";
-        throw Geodesic_error(msg.str());
-      }
       const std::size_t h = 3 * f + k;
       frame[h] = Halfedge_frame{len, dot / len, twice_area / len};
       corner_angle[h] = std::atan2(twice_area, dot);
@@ -195,7 +219,224 @@ inline void Mesh_cache::compute_frames()
     anisotropy_sum += 0.5 * (a + b + c) * std::max({a, b, c}) / (2 * std::sqrt(3.) * area);
   }
   mean_edge_length = edge_count ? length_sum / double(edge_count) : 0.;
-  mean_anisotropy = number_of_faces ? anisotropy_sum / double(number_of_faces) : 1.;
+  const std::size_t live_faces = number_of_faces - std::size_t(std::count_if(face_state.begin(), face_state.end(),
+                                                                           [](std::uint8_t s) { return s & face_removed; }));
+  mean_anisotropy = live_faces ? anisotropy_sum / double(live_faces) : 1.;
+}
+
+namespace mesh_geometry {
+inline double distance(const std::array<double, 3>& a, const std::array<double, 3>& b)
+{
+  return std::hypot(b[0] - a[0], b[1] - a[1], b[2] - a[2]);
+}
+inline double twice_area(const std::array<double, 3>& a, const std::array<double, 3>& b, const std::array<double, 3>& c)
+{
+  const double ab[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+  const double ac[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+  return std::hypot(ab[1] * ac[2] - ab[2] * ac[1], ab[2] * ac[0] - ab[0] * ac[2], ab[0] * ac[1] - ab[1] * ac[0]);
+}
+/// Barycentric coordinates of the projection of p on the plane of (a, b, c); false if degenerate.
+inline bool barycentric(const std::array<double, 3>& a, const std::array<double, 3>& b, const std::array<double, 3>& c,
+                        const std::array<double, 3>& p, std::array<double, 3>& out)
+{
+  double v0[3], v1[3], v2[3];
+  for(int i = 0; i < 3; ++i) {
+    v0[i] = b[i] - a[i];
+    v1[i] = c[i] - a[i];
+    v2[i] = p[i] - a[i];
+  }
+  auto dot = [](const double* x, const double* y) { return x[0] * y[0] + x[1] * y[1] + x[2] * y[2]; };
+  const double d00 = dot(v0, v0), d01 = dot(v0, v1), d11 = dot(v1, v1), d20 = dot(v2, v0), d21 = dot(v2, v1);
+  const double denominator = d00 * d11 - d01 * d01;
+  if(!(denominator > 0))
+    return false;
+  out[1] = (d11 * d20 - d01 * d21) / denominator;
+  out[2] = (d00 * d21 - d01 * d20) / denominator;
+  out[0] = 1 - out[1] - out[2];
+  return true;
+}
+} // namespace mesh_geometry
+
+inline bool is_degenerate_triangle(const std::array<double, 3>& a, const std::array<double, 3>& b,
+                                   const std::array<double, 3>& c)
+{
+  using mesh_geometry::distance;
+  const double longest = std::max({distance(a, b), distance(b, c), distance(c, a)});
+  return !(longest > 0) || !(mesh_geometry::twice_area(a, b, c) > degenerate_height_ratio * longest * longest);
+}
+
+// Face g = face(y) becomes (source(y), c, apex(y)), and a new face (c, target(y), apex(y)) is
+// added: y's edge is cut at vertex c. The half-edges of the cut edge are left unpaired.
+inline void Mesh_cache::split_face_at(int y, int c)
+{
+  const int g = face(y), j = y % 3;
+  const int b = corner_vertex[std::size_t(y)], a = target(y), x = apex(y);
+  const int ax = next(y), ax_opposite = opposite_halfedge[std::size_t(ax)];
+  const int n = int(corner_vertex.size() / 3);
+  // the added face: c -> a, a -> x (the old a -> x), x -> c
+  corner_vertex.insert(corner_vertex.end(), {c, a, x});
+  opposite_halfedge.insert(opposite_halfedge.end(), {-1, ax_opposite, 3 * g + (j + 1) % 3});
+  if(ax_opposite >= 0)
+    opposite_halfedge[std::size_t(ax_opposite)] = 3 * n + 1;
+  // face g: b -> c (was b -> a), c -> x (new), x -> b (unchanged)
+  corner_vertex[std::size_t(3 * g + (j + 1) % 3)] = c;
+  opposite_halfedge[std::size_t(y)] = -1;
+  opposite_halfedge[std::size_t(3 * g + (j + 1) % 3)] = 3 * n + 2;
+  mesh_face_of_added.push_back(mesh_face(g));
+  face_state[std::size_t(g)] |= face_changed;
+  face_state.push_back(face_changed);
+  (void)b;
+}
+
+// Removes the zero-area faces (see `face_state`), keeping the surface they lie on connected:
+// a needle's two long edges become one edge, a cap's long edge is cut at its middle vertex in
+// the face beyond. The ends of a needle's short edge are glued (added to `glued_groups`).
+inline void Mesh_cache::remove_degenerate_faces(std::vector<std::vector<int>>& glued_groups)
+{
+  using mesh_geometry::distance;
+  std::vector<int> pending;
+  for(std::size_t f = 0; f < number_of_faces; ++f)
+    if(is_degenerate_triangle(position[std::size_t(corner_vertex[3 * f])], position[std::size_t(corner_vertex[3 * f + 1])],
+                              position[std::size_t(corner_vertex[3 * f + 2])]))
+      pending.push_back(int(f));
+  if(pending.empty())
+    return;
+  face_state.assign(number_of_faces, 0);
+  mesh_corner_vertex = corner_vertex;
+  auto is_degenerate_face = [&](int f) {
+    return is_degenerate_triangle(position[std::size_t(corner_vertex[std::size_t(3 * f)])],
+                                  position[std::size_t(corner_vertex[std::size_t(3 * f + 1)])],
+                                  position[std::size_t(corner_vertex[std::size_t(3 * f + 2)])]);
+  };
+  auto pair = [&](int h, int g) {
+    if(h >= 0)
+      opposite_halfedge[std::size_t(h)] = g;
+    if(g >= 0)
+      opposite_halfedge[std::size_t(g)] = h;
+  };
+  auto remove = [&](int f) {
+    face_state[std::size_t(f)] = face_removed;
+    for(int k = 0; k < 3; ++k) {
+      const int h = 3 * f + k, o = opposite_halfedge[std::size_t(h)];
+      if(o >= 0 && opposite_halfedge[std::size_t(o)] == h)
+        opposite_halfedge[std::size_t(o)] = -1;
+      opposite_halfedge[std::size_t(h)] = -1;
+    }
+  };
+  // a face beyond a cap's long edge may be degenerate itself: such caps wait for it
+  while(!pending.empty()) {
+    std::vector<int> waiting;
+    bool progressed = false;
+    for(int f : pending) {
+      if(face_state[std::size_t(f)] & face_removed)
+        continue;
+      // k: the longest edge, 3f+k from corner k to corner k+1; the middle vertex is corner k+2
+      double length[3];
+      for(int i = 0; i < 3; ++i)
+        length[i] = distance(position[std::size_t(corner_vertex[std::size_t(3 * f + i)])],
+                             position[std::size_t(corner_vertex[std::size_t(3 * f + (i + 1) % 3)])]);
+      const int k = int(std::max_element(length, length + 3) - length);
+      const int longest = 3 * f + k, to_middle = 3 * f + (k + 1) % 3, from_middle = 3 * f + (k + 2) % 3;
+      const double shortest = std::min(length[(k + 1) % 3], length[(k + 2) % 3]);
+      if(shortest <= degenerate_height_ratio * length[k] || !(length[k] > 0)) {
+        // a needle (or a point): glue the ends of its shortest edge, join the other two edges
+        const int s = length[(k + 1) % 3] <= length[(k + 2) % 3] ? to_middle : from_middle;
+        const int u = s == to_middle ? longest : to_middle, w = s == to_middle ? from_middle : longest;
+        const int ou = opposite_halfedge[std::size_t(u)], ow = opposite_halfedge[std::size_t(w)];
+        glued_groups.push_back({corner_vertex[std::size_t(s)], corner_vertex[std::size_t(next(s))]});
+        if(!(length[k] > 0))
+          glued_groups.push_back({corner_vertex[std::size_t(s)], corner_vertex[std::size_t(prev(s))]});
+        remove(f);
+        if(length[k] > 0)
+          pair(ou, ow);
+        progressed = true;
+        continue;
+      }
+      const int y = opposite_halfedge[std::size_t(longest)];
+      if(y >= 0 && (face_state[std::size_t(face(y))] & face_removed) == 0 && is_degenerate_face(face(y))) {
+        waiting.push_back(f);
+        continue;
+      }
+      const int c = corner_vertex[std::size_t(from_middle)];
+      const int o_to = opposite_halfedge[std::size_t(to_middle)], o_from = opposite_halfedge[std::size_t(from_middle)];
+      remove(f);
+      progressed = true;
+      if(y >= 0) {
+        // the face beyond: its half-edge y runs B -> A; B -> c pairs with the cap's c -> B
+        // neighbour, c -> A with the cap's A -> c neighbour
+        const int n = int(corner_vertex.size() / 3);
+        split_face_at(y, c);
+        pair(y, o_to);
+        pair(3 * n, o_from);
+        for(int g : {face(y), n})
+          if(is_degenerate_face(g))
+            waiting.push_back(g);
+      }
+    }
+    if(!progressed) {
+      std::ostringstream msg;
+      msg << "degenerate (zero-area) triangles that cannot be resolved: face " << mesh_face(waiting.front());
+      throw Geodesic_error(msg.str());
+    }
+    pending.swap(waiting);
+  }
+}
+
+inline void Mesh_cache::relocate_face_point(int& f, std::array<double, 3>& b) const
+{
+  if(!is_face_changed(f))
+    return;
+  std::array<double, 3> p{{0., 0., 0.}};
+  for(int k = 0; k < 3; ++k)
+    for(int i = 0; i < 3; ++i)
+      p[i] += b[k] * position[std::size_t(mesh_corner_vertex[std::size_t(3 * f + k)])][i];
+  // the live face, around the corners, in which p lies deepest
+  double deepest = -std::numeric_limits<double>::infinity();
+  int best = -1;
+  std::array<double, 3> best_b{{1., 0., 0.}};
+  auto consider = [&](int h) {
+    const int g = face(h);
+    std::array<double, 3> c;
+    if(!mesh_geometry::barycentric(position[std::size_t(corner_vertex[std::size_t(3 * g)])],
+                                   position[std::size_t(corner_vertex[std::size_t(3 * g + 1)])],
+                                   position[std::size_t(corner_vertex[std::size_t(3 * g + 2)])], p, c))
+      return;
+    const double depth = std::min({c[0], c[1], c[2]});
+    if(depth > deepest) {
+      deepest = depth;
+      best = g;
+      best_b = c;
+    }
+  };
+  for(int k = 0; k < 3; ++k) {
+    const int v = mesh_corner_vertex[std::size_t(3 * f + k)];
+    for_each_outgoing(v, consider);
+    for_each_glued(v, [&](int u) { for_each_outgoing(u, consider); });
+  }
+  if(best < 0)
+    throw Geodesic_error("a point of degenerate face " + std::to_string(f) + " lies in no face of the mesh");
+  for(double& x : best_b)
+    x = std::max(0., x);
+  const double sum = best_b[0] + best_b[1] + best_b[2];
+  for(double& x : best_b)
+    x /= sum;
+  f = best;
+  b = best_b;
+}
+
+inline void Mesh_cache::mesh_face_point(int f, const std::array<double, 3>& p, int& mesh_f,
+                                        std::array<double, 3>& mesh_b) const
+{
+  mesh_f = mesh_face(f);
+  const auto& corners = is_face_changed(f) ? mesh_corner_vertex : corner_vertex;
+  mesh_geometry::barycentric(position[std::size_t(corners[std::size_t(3 * mesh_f)])],
+                             position[std::size_t(corners[std::size_t(3 * mesh_f + 1)])],
+                             position[std::size_t(corners[std::size_t(3 * mesh_f + 2)])], p, mesh_b);
+  for(double& x : mesh_b)
+    x = std::max(0., x);
+  const double sum = mesh_b[0] + mesh_b[1] + mesh_b[2];
+  for(double& x : mesh_b)
+    x /= sum;
 }
 
 // A vertex whose corners do not all lie in the fan of its first outgoing half-edge keeps that
@@ -219,7 +460,7 @@ inline void Mesh_cache::split_non_manifold_vertices(const std::vector<std::int32
       for_each_outgoing(int(v), [&](int h) { in_first_fan[std::size_t(h)] = 1; });
   for(std::size_t h0 = 0; h0 < corner_vertex.size(); ++h0) {
     const int v = corner_vertex[h0];
-    if(std::size_t(v) >= nv || !is_split[std::size_t(v)] || in_first_fan[h0])
+    if(std::size_t(v) >= nv || !is_split[std::size_t(v)] || in_first_fan[h0] || is_face_removed(face(int(h0))))
       continue;
     // h0 starts a new fan: find its border half-edge, if any, by turning the other way
     int start = int(h0);
@@ -333,7 +574,7 @@ inline void scale_to_unit(Mesh_cache& cache)
 
 /// Builds the cache of `tm`. Vertex `v` of `tm` becomes index `get(vim, v)`, face `f` becomes
 /// index `get(fim, f)`. Throws `Geodesic_error` for an empty mesh, a face that is not a triangle,
-/// a non-finite coordinate or a degenerate triangle.
+/// a non-finite coordinate, or degenerate triangles that cannot be removed.
 template <class TriangleMesh, class VertexPointMap, class VertexIndexMap, class FaceIndexMap>
 void build_mesh_cache(const TriangleMesh& tm, VertexPointMap vpm, VertexIndexMap vim,
                       FaceIndexMap fim, Mesh_cache& cache,

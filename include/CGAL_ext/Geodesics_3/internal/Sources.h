@@ -7,6 +7,7 @@
 #include <CGAL_ext/Geodesics_3/internal/Mesh_cache.h>
 #include <CGAL_ext/Geodesics_3/internal/Window.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <sstream>
@@ -27,18 +28,29 @@ struct Source_point
 };
 
 /// Throws when there is no source to start from.
-inline void check_has_sources(const std::vector<Source_point>& sources)
+/// Throws when there is no source, or when every source is a vertex in no face.
+inline void check_has_sources(const Mesh_cache& m, const std::vector<Source_point>& sources)
 {
   if(sources.empty())
     throw Geodesic_error("no source was given");
+  auto isolated = [&](const Source_point& s) {
+    if(s.vertex < 0 || m.first_outgoing[std::size_t(s.vertex)] >= 0)
+      return false;
+    bool any_face = false;
+    m.for_each_glued(s.vertex, [&](int u) { any_face |= m.first_outgoing[std::size_t(u)] >= 0; });
+    return !any_face;
+  };
+  if(std::all_of(sources.begin(), sources.end(), isolated))
+    throw Geodesic_error("source vertex " + std::to_string(sources.front().vertex) +
+                         " is in no face (an isolated vertex): no surface to measure distances on");
 }
 
 /// Throws unless `v` is a vertex index of the mesh; `role` names the point ("source", ...).
 inline void check_vertex_index(const Mesh_cache& m, long v, const char* role)
 {
-  if(v < 0 || std::size_t(v) >= m.number_of_vertices)
+  if(v < 0 || std::size_t(v) >= m.number_of_mesh_vertices)
     throw Geodesic_error(std::string(role) + " vertex " + std::to_string(v) + " is out of range (the mesh has " +
-                         std::to_string(m.number_of_vertices) + " vertices)");
+                         std::to_string(m.number_of_mesh_vertices) + " vertices)");
 }
 
 /// Checks a point of face `face` given by barycentric coordinates (a face index of the mesh,
@@ -47,9 +59,9 @@ inline void check_vertex_index(const Mesh_cache& m, long v, const char* role)
 inline std::array<double, 3> checked_barycentric(const Mesh_cache& m, long face, const std::array<double, 3>& b,
                                                  const char* role)
 {
-  if(face < 0 || std::size_t(face) >= m.number_of_faces)
+  if(face < 0 || std::size_t(face) >= m.number_of_mesh_faces)
     throw Geodesic_error(std::string(role) + " face " + std::to_string(face) + " is out of range (the mesh has " +
-                         std::to_string(m.number_of_faces) + " faces)");
+                         std::to_string(m.number_of_mesh_faces) + " faces)");
   const double sum = b[0] + b[1] + b[2];
   if(!std::isfinite(sum) || std::abs(sum - 1.) > barycentric_sum_tolerance || b[0] < -barycentric_snap ||
      b[1] < -barycentric_snap || b[2] < -barycentric_snap) {
@@ -79,6 +91,7 @@ inline Source_point normalized_source(const Mesh_cache& m, Source_point s)
     return s;
   }
   s.barycentric = checked_barycentric(m, s.face, s.barycentric, "source");
+  m.relocate_face_point(s.face, s.barycentric);
   for(int k = 0; k < 3; ++k)
     if(s.barycentric[k] >= 1.) {
       Source_point v;

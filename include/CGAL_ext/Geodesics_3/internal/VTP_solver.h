@@ -103,7 +103,7 @@ public:
   void run()
   {
     const auto start = Clock::now();
-    check_has_sources(m_sources);
+    check_has_sources(m_mesh, m_sources);
     m_main_slot = m_pool.use_one_slot_per_thread(m_parallel);
     for(const Source_point& s : m_sources) {
       if(s.vertex >= 0) {
