@@ -81,12 +81,14 @@ Geodesic_mesh_repairs polygon_soup_to_geodesic_mesh(
 /// does what the function above does, and also tells which face each input triangle became,
 /// so that points given on the input's faces can be placed on `tm`.
 ///
+/// \tparam PointRange, PolygonRange, TriangleMesh, NamedParameters as above
+/// \param points, polygons, tm, vertex_of_point, np as above
 /// \param face_of_polygon receives, per input polygon of 3 distinct points, its face of `tm`,
 ///        whose corners are the polygon's points, possibly in the reverse order (match them by
 ///        position to order barycentric coordinates); `boost::graph_traits<TriangleMesh>::null_face()`
 ///        for the other polygons (removed, split or triangulated)
-///
-/// The other parameters, the return value and the exceptions are those of the function above.
+/// \return what was changed
+/// \throws Geodesic_error as above
 template <class PointRange, class PolygonRange, class TriangleMesh,
           class NamedParameters = parameters::Default_named_parameters_type>
 Geodesic_mesh_repairs polygon_soup_to_geodesic_mesh(

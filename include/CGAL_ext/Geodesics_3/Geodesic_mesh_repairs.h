@@ -33,7 +33,7 @@ struct Geodesic_mesh_repairs
   /// points in no face: isolated vertices of the mesh, at distance `+infinity` from any other source
   std::size_t isolated_points = 0;
 
-  /// whether the mesh differs from the soup taken as is (isolated points are kept as they are)
+  /// \return whether the mesh differs from the soup taken as is (isolated points are kept as they are)
   bool changed() const
   {
     return merged_points + removed_polygons + split_polygons + triangulated_polygons + reversed_polygons +
@@ -41,8 +41,8 @@ struct Geodesic_mesh_repairs
            0;
   }
 
-  /// the changes and the isolated points in one line of text, e.g. "merged 1,234 duplicate points,
-  /// triangulated 40 polygons"; empty when there is nothing to say
+  /// \return the changes and the isolated points in one line of text, e.g. "merged 1,234
+  ///         duplicate points, triangulated 40 polygons"; empty when there is nothing to say
   std::string summary() const
   {
     std::string text;
