@@ -7,11 +7,15 @@
 //   geodesic path MESH --source S[,S...] --target T [--algorithm fwp-mmp|mmp|pmmp] [--threads N]
 //                 [--batch-size K] [--max-distance D] [--output FILE.txt|FILE.obj|FILE.ply] [--stats]
 //
-// S and T are a vertex id or a face point f:FACE:b0:b1:b2 (barycentric coordinates in the order
-// of the face's vertices in the file). Vertex and face ids are those of the file (its order of
-// vertices and faces). `path` writes the shortest path from the nearest source to T as a
-// polyline, the source first. Every error is one line `error: ...` on stderr, exit code 1 (2 for
-// a bad command line), and no output file.
+// MESH is an OFF, OBJ, PLY or STL file: triangles, quads, polygons, soups and non-manifold meshes
+// are made into the triangle mesh the library takes (CGAL_ext::polygon_soup_to_geodesic_mesh),
+// and one line `note: ...` on stderr says what was repaired. S and T are a vertex id or a face
+// point f:FACE:b0:b1:b2 (barycentric coordinates in the order of the face's vertices in the
+// file). Vertex and face ids, and the distances written, are those of the file (its order of
+// vertices and faces; for STL, each distinct point in the order of its first appearance). `path`
+// writes the shortest path from the nearest source to T as a polyline, the source first. Every
+// error is one line `error: ...` on stderr, exit code 1 (2 for a bad command line), and no output
+// file.
 //
 // This file runs the subcommands; their parts are in the tool_*.h files beside it: the options
 // and their checking, reading the mesh, calling the library, writing the output, --stats.
@@ -37,20 +41,32 @@
 namespace geodesic_tool {
 namespace {
 
-/// The mesh of the file, checked, with its points and polygons in `soup`, and how long reading
-/// it took.
-Mesh read_mesh(const std::string& path, Soup& soup, double& seconds)
+/// The file at `path` and its mesh, and how long reading and making it took.
+Mesh_file read_mesh(const std::string& path, double& seconds)
 {
   const Stopwatch read_watch;
-  Mesh mesh = read_checked_mesh(path, soup);
+  Mesh_file file = read_mesh_file(path);
   seconds = read_watch.seconds();
-  return mesh;
+  return file;
 }
 
-void check_ranges(const std::vector<Surface_point>& sources, const Mesh& mesh)
+void check_range(const Surface_point& point, const Mesh_file& file, const char* role = "source")
+{
+  check_surface_point_range(point, file.soup.points.size(), file.soup.polygons.size(), role);
+}
+
+void check_ranges(const std::vector<Surface_point>& sources, const Mesh_file& file)
 {
   for(const Surface_point& s : sources)
-    check_surface_point_range(s, mesh.number_of_vertices(), mesh.number_of_faces());
+    check_range(s, file);
+}
+
+/// After a successful run (an error stays the one line on stderr): what was repaired.
+void print_note(const Mesh_file& file)
+{
+  const std::string summary = file.repairs.summary();
+  if(!summary.empty())
+    std::cerr << "note: " << summary << std::endl;
 }
 
 int run_distances(const Distances_options& options)
@@ -60,25 +76,25 @@ int run_distances(const Distances_options& options)
   const std::vector<Surface_point> sources = parse_sources(options.sources);
   const Output_format format = options.output.empty() ? Output_format::txt : output_format(options.output);
 
-  Soup soup;
   double seconds_read = 0;
-  Mesh mesh = read_mesh(options.mesh, soup, seconds_read);
-  check_ranges(sources, mesh);
+  Mesh_file file = read_mesh(options.mesh, seconds_read);
+  check_ranges(sources, file);
 
   CGAL_ext::Geodesic_statistics stats;
-  const Distance_map distance = compute_distances(mesh, soup.polygons, sources, choice, stats);
+  const std::vector<double> distances = compute_distances(file, sources, choice, stats);
 
   write_output(options.output, [&](std::ostream& os) {
-    return format == Output_format::ply ? write_distances_ply(os, mesh, distance)
-                                        : write_distances_txt(os, mesh, distance);
+    return format == Output_format::ply ? write_distances_ply(os, file.soup, distances)
+                                        : write_distances_txt(os, distances);
   });
 
+  print_note(file);
   if(options.stats) {
     std::ostringstream s;
-    write_input_stats(s, choice, mesh, sources.size(), seconds_read);
+    write_input_stats(s, choice, file, sources.size(), seconds_read);
     write_solver_stats(s, choice, stats);
     s << "peak_rss_mb=" << peak_rss_mb() << "\n"
-      << "max_distance=" << std::setprecision(17) << farthest_finite(mesh, distance) << "\n";
+      << "max_distance=" << std::setprecision(17) << farthest_finite(distances) << "\n";
     std::cerr << s.str() << std::flush;
   }
   return 0;
@@ -92,13 +108,12 @@ int run_path(const Path_options& options)
   const Surface_point target = parse_surface_point(options.target, "target");
   const Output_format format = options.output.empty() ? Output_format::txt : output_format(options.output, true);
 
-  Soup soup;
   double seconds_read = 0;
-  const Mesh mesh = read_mesh(options.mesh, soup, seconds_read);
-  check_ranges(sources, mesh);
-  check_surface_point_range(target, mesh.number_of_vertices(), mesh.number_of_faces(), "target");
+  const Mesh_file file = read_mesh(options.mesh, seconds_read);
+  check_ranges(sources, file);
+  check_range(target, file, "target");
 
-  const Path_result path = trace_path(mesh, soup.polygons, sources, target, choice);
+  const Path_result path = trace_path(file, sources, target, choice);
 
   write_output(options.output, [&](std::ostream& os) {
     switch(format) {
@@ -112,9 +127,10 @@ int run_path(const Path_options& options)
     return false;
   });
 
+  print_note(file);
   if(options.stats) {
     std::ostringstream s;
-    write_input_stats(s, choice, mesh, sources.size(), seconds_read);
+    write_input_stats(s, choice, file, sources.size(), seconds_read);
     s << "seconds_build=" << path.seconds_build << "\n"
       << "seconds_query=" << path.seconds_query << "\n";
     write_solver_stats(s, choice, path.stats);

@@ -1,9 +1,12 @@
 // Copyright (c) 2026 The CGAL_ext geodesics developers.
-// The mesh of the geodesic tool: its types, and reading a file into a checked triangle mesh
-// whose vertex and face ids are those of the file.
+// The mesh of the geodesic tool: its types, and reading a file (OFF, OBJ, PLY, STL) into the
+// triangle mesh the library takes, keeping the file's points and polygons, which the tool's ids
+// and outputs refer to.
 
 #ifndef GEODESIC_TOOL_MESH_H
 #define GEODESIC_TOOL_MESH_H
+
+#include <CGAL_ext/Geodesics_3/Geodesic_mesh_repairs.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -21,7 +24,6 @@ typedef K::Point_3 Point;
 typedef CGAL::Surface_mesh<Point> Mesh;
 typedef Mesh::Vertex_index Vertex_index;
 typedef Mesh::Face_index Face_index;
-typedef Mesh::Property_map<Vertex_index, double> Distance_map;
 /// A point inside a face, barycentric coordinates in the library's order of its corners.
 typedef std::pair<Face_index, std::array<double, 3>> Face_location;
 typedef std::vector<std::vector<std::size_t>> Polygons;
@@ -31,20 +33,31 @@ struct Soup
 {
   std::vector<Point> points;
   Polygons polygons;
+  std::size_t points_merged_when_read = 0; // STL: the repeats of points among its triangles' corners
 };
 
-/// Reads a .off, .obj or .ply file; throws Tool_error if it cannot be read or has no faces.
+/// Reads a .off, .obj, .ply or .stl file; throws Tool_error if it cannot be read. The points of
+/// an STL file, which repeats them in every triangle, are each distinct point once, in the order
+/// of its first appearance (CGAL's reader merges them).
 Soup read_soup(const std::string& path);
 
-/// Throws Tool_error naming what keeps `soup` from being a manifold, oriented triangle mesh
-/// with finite coordinates (the vertex, face or edge, by its id in the file).
-void check_soup(const Soup& soup);
+/// A mesh file as the tool uses it: the file's points and polygons, which the ids of the command
+/// line and the outputs refer to, and the triangle mesh the library runs on.
+struct Mesh_file
+{
+  Soup soup;
+  Mesh mesh;
+  std::vector<Vertex_index> vertex_of_point; // per point of the file
+  std::vector<Face_index> face_of_polygon;   // per polygon of the file; null unless a triangle kept as is
+  CGAL_ext::Geodesic_mesh_repairs repairs;
+};
 
-/// Vertex i of the mesh is point i of the soup and face j is polygon j (isolated points are kept).
-Mesh soup_to_mesh(const Soup& soup);
+/// The mesh of the soup, through CGAL_ext::polygon_soup_to_geodesic_mesh() (which throws
+/// Geodesic_error for what it cannot repair); the points merged when reading count as merged.
+Mesh_file make_mesh_file(Soup soup);
 
-/// The mesh of the file at `path`, checked; `soup` receives the file's points and polygons.
-Mesh read_checked_mesh(const std::string& path, Soup& soup);
+/// The file at `path`, read and made into a mesh.
+Mesh_file read_mesh_file(const std::string& path);
 
 } // namespace geodesic_tool
 

@@ -67,7 +67,10 @@ const char* const point_help = "a vertex id, or f:FACE:b0:b1:b2 (barycentric coo
 template <class Sources>
 void add_mesh_and_sources(CLI::App& cmd, std::string& mesh, Sources& sources)
 {
-  cmd.add_option("MESH", mesh, "Triangle mesh (.off, .obj or .ply); vertex ids are the file order")->required();
+  cmd.add_option("MESH", mesh,
+                 "Mesh (.off, .obj, .ply or .stl): triangles, polygons, soups, non-manifold meshes; vertex ids "
+                 "are the file order (.stl: each distinct point where it first appears)")
+    ->required();
   cmd.add_option("--source", sources, std::string("Sources, comma-separated: ") + point_help)
     ->required()
     ->delimiter(',')
@@ -102,8 +105,8 @@ void add_distances_command(CLI::App& app, Distances_options& options)
   cmd->add_option("--max-distance", options.solver.max_distance,
                   "Stop the propagation at this distance; farther vertices get inf");
   cmd->add_option("--output", options.output,
-                  "Output file: .txt (one distance per line, vertex order) or .ply (mesh with a per-vertex "
-                  "'distance' and a colour ramp); default: txt on the standard output");
+                  "Output file: .txt (one distance per line, vertex order) or .ply (the file's vertices and faces "
+                  "with a per-vertex 'distance' and a colour ramp); default: txt on the standard output");
   cmd->add_flag("--stats", options.stats, "Print key=value statistics on the standard error");
 }
 

@@ -4,12 +4,11 @@
 
 #include "tool_error.h"
 
-#include <CGAL/IO/PLY.h>
-
 #include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -57,11 +56,11 @@ void write_output(const std::string& path, const std::function<bool(std::ostream
 // ---------------------------------------------------------------------------------------------
 // Distances
 
-bool write_distances_txt(std::ostream& os, const Mesh& mesh, Distance_map distance)
+bool write_distances_txt(std::ostream& os, const std::vector<double>& distances)
 {
   char line[64];
-  for(Vertex_index v : mesh.vertices()) {
-    std::snprintf(line, sizeof(line), "%.17g\n", distance[v]); // prints inf for +infinity
+  for(double d : distances) {
+    std::snprintf(line, sizeof(line), "%.17g\n", d); // prints inf for +infinity
     os << line;
   }
   return bool(os);
@@ -76,23 +75,56 @@ CGAL::IO::Color distance_color(double d, double farthest)
   return CGAL::IO::Color(level(t), 0, level(1 - t)); // blue near, red far
 }
 
-double farthest_finite(const Mesh& mesh, Distance_map distance)
+double farthest_finite(const std::vector<double>& distances)
 {
   double farthest = 0;
-  for(Vertex_index v : mesh.vertices())
-    if(std::isfinite(distance[v]))
-      farthest = std::max(farthest, distance[v]);
+  for(double d : distances)
+    if(std::isfinite(d))
+      farthest = std::max(farthest, d);
   return farthest;
 }
 
-bool write_distances_ply(std::ostream& os, Mesh& mesh, Distance_map distance)
+// CGAL writes PLY properties of a Surface_mesh only, which cannot hold every soup (non-manifold
+// ones); the file's points and polygons are written here, in the machine's byte order.
+bool write_distances_ply(std::ostream& os, const Soup& soup, const std::vector<double>& distances)
 {
-  const double farthest = farthest_finite(mesh, distance);
-  auto color = mesh.add_property_map<Vertex_index, CGAL::IO::Color>("v:color").first;
-  for(Vertex_index v : mesh.vertices())
-    color[v] = distance_color(distance[v], farthest);
-  CGAL::IO::set_mode(os, CGAL::IO::BINARY);
-  return CGAL::IO::write_PLY(os, mesh, "geodesic distances from the geodesic tool");
+  const auto binary = [&](auto value) { os.write(reinterpret_cast<const char*>(&value), sizeof(value)); };
+  const std::uint16_t one = 1;
+  const bool little_endian = *reinterpret_cast<const unsigned char*>(&one) == 1;
+  std::size_t largest_polygon = 0;
+  for(const auto& polygon : soup.polygons)
+    largest_polygon = std::max(largest_polygon, polygon.size());
+  const bool small_polygons = largest_polygon <= 255;
+  os << "ply\n"
+     << "format " << (little_endian ? "binary_little_endian" : "binary_big_endian") << " 1.0\n"
+     << "comment geodesic distances from the geodesic tool\n"
+     << "element vertex " << soup.points.size() << "\n"
+     << "property double x\nproperty double y\nproperty double z\nproperty double distance\n"
+     << "property uchar red\nproperty uchar green\nproperty uchar blue\n"
+     << "element face " << soup.polygons.size() << "\n"
+     << "property list " << (small_polygons ? "uchar" : "int") << " int vertex_indices\n"
+     << "end_header\n";
+  const double farthest = farthest_finite(distances);
+  for(std::size_t i = 0; i < soup.points.size(); ++i) {
+    const Point& p = soup.points[i];
+    binary(p.x());
+    binary(p.y());
+    binary(p.z());
+    binary(distances[i]);
+    const CGAL::IO::Color color = distance_color(distances[i], farthest);
+    binary(color.red());
+    binary(color.green());
+    binary(color.blue());
+  }
+  for(const auto& polygon : soup.polygons) {
+    if(small_polygons)
+      binary(static_cast<std::uint8_t>(polygon.size()));
+    else
+      binary(static_cast<std::int32_t>(polygon.size()));
+    for(std::size_t id : polygon)
+      binary(static_cast<std::int32_t>(id));
+  }
+  return bool(os);
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -25,15 +25,16 @@ void write_output(const std::string& path, const std::function<bool(std::ostream
 // ---------------------------------------------------------------------------------------------
 // Distances
 
-/// One distance per line, in vertex order, with 17 significant digits; `inf` for +infinity.
-bool write_distances_txt(std::ostream& os, const Mesh& mesh, Distance_map distance);
+/// One distance per line, in the order of the file's points, with 17 significant digits; `inf`
+/// for +infinity.
+bool write_distances_txt(std::ostream& os, const std::vector<double>& distances);
 
-/// Binary PLY of the mesh: the vertex property "v:distance" becomes the PLY property `distance`,
-/// exactly, and the colour of each vertex follows distance_color(). Adds "v:color" to the mesh.
-bool write_distances_ply(std::ostream& os, Mesh& mesh, Distance_map distance);
+/// Binary PLY of the file's points and polygons as they are: each point has its distance as
+/// the PLY property `distance`, exactly, and a colour following distance_color().
+bool write_distances_ply(std::ostream& os, const Soup& soup, const std::vector<double>& distances);
 
 /// The largest finite distance (0 if there is none).
-double farthest_finite(const Mesh& mesh, Distance_map distance);
+double farthest_finite(const std::vector<double>& distances);
 
 /// The colour ramp of the PLY output: blue at 0, red at `farthest`, grey where unreached.
 CGAL::IO::Color distance_color(double d, double farthest);

@@ -23,6 +23,7 @@ namespace geodesic_tool {
 namespace {
 
 const double infinity = std::numeric_limits<double>::infinity();
+typedef Mesh::Property_map<Vertex_index, double> Distance_map;
 
 #ifdef CGAL_LINKED_WITH_TBB
 typedef CGAL::Parallel_tag Parallel_tag;
@@ -52,31 +53,41 @@ private:
 #endif
 };
 
-/// The library orders barycentric coordinates from source(halfedge(f)); Euler::add_face() does
-/// not make that the polygon's first vertex, so the file order is mapped corner by corner.
-Face_location library_location(const Mesh& mesh, const std::vector<std::size_t>& polygon, Face_index f,
-                               const std::array<double, 3>& file_barycentric)
+/// The vertex of the mesh of a vertex id of the file.
+Vertex_index mesh_vertex(const Mesh_file& file, const Surface_point& s) { return file.vertex_of_point[*s.vertex]; }
+
+/// A face point of the command line (barycentric coordinates in the file's order of the face's
+/// vertices) in the library's order of the corners of its face of the mesh.
+Face_location library_location(const Mesh_file& file, const Surface_point& s, const char* role)
 {
+  const Face_index f = file.face_of_polygon[s.face];
+  const std::vector<std::size_t>& polygon = file.soup.polygons[s.face];
+  if(f == Mesh::null_face())
+    throw Tool_error(std::string(role) + " '" + s.text + "': face " + std::to_string(s.face) +
+                     " of the file is not a triangle of the surface (" +
+                     (polygon.size() == 3 ? std::string("its 3 vertices are not distinct points")
+                                          : "it has " + std::to_string(polygon.size()) + " vertices") +
+                     ")");
+  // The face may start at another corner, and run the other way if the face was reversed to
+  // orient the surface; its corners are at the polygon's points (merged and copied points have
+  // other ids), which are 3 distinct positions.
   Face_location location(f, {{0., 0., 0.}});
   int k = 0;
-  for(auto h : CGAL::halfedges_around_face(mesh.halfedge(f), mesh)) {
-    const std::size_t v = mesh.source(h);
-    location.second[k++] = file_barycentric[std::find(polygon.begin(), polygon.end(), v) - polygon.begin()];
+  for(auto h : CGAL::halfedges_around_face(file.mesh.halfedge(f), file.mesh)) {
+    const Point& corner = file.mesh.point(file.mesh.source(h));
+    for(int j = 0; j < 3; ++j)
+      if(file.soup.points[polygon[j]] == corner)
+        location.second[k] = s.barycentric[j];
+    ++k;
   }
   return location;
 }
 
-/// A face point of the command line, in the library's order of the face's corners.
-Face_location library_location(const Mesh& mesh, const Polygons& polygons, const Surface_point& s)
-{
-  const Face_index f(static_cast<Mesh::size_type>(s.face));
-  return library_location(mesh, polygons[s.face], f, s.barycentric);
-}
-
 /// A vertex source as a corner of one of its faces, so that it can join face-point sources.
-Face_location vertex_location(const Mesh& mesh, const Surface_point& s)
+Face_location vertex_location(const Mesh_file& file, const Surface_point& s)
 {
-  const Vertex_index v(static_cast<Mesh::size_type>(*s.vertex));
+  const Mesh& mesh = file.mesh;
+  const Vertex_index v = mesh_vertex(file, s);
   for(auto h : CGAL::halfedges_around_target(v, mesh)) {
     if(mesh.is_border(h))
       continue;
@@ -90,7 +101,27 @@ Face_location vertex_location(const Mesh& mesh, const Surface_point& s)
   throw Tool_error("source '" + s.text + "': an isolated vertex cannot be mixed with face-point sources");
 }
 
-Vertex_index vertex_of(const Surface_point& s) { return Vertex_index(static_cast<Mesh::size_type>(*s.vertex)); }
+/// A source or target in the library's terms: a vertex, or a face location.
+template <class Function>
+void with_library_point(const Mesh_file& file, const Surface_point& s, const char* role, Function f)
+{
+  if(s.vertex)
+    f(mesh_vertex(file, s));
+  else
+    f(library_location(file, s, role));
+}
+
+/// Throws Tool_error when every source is a vertex in no face: no other vertex would be reached.
+void check_a_source_is_on_a_face(const Mesh_file& file, const std::vector<Surface_point>& sources)
+{
+  for(const Surface_point& s : sources)
+    if(!s.vertex || !file.mesh.is_isolated(mesh_vertex(file, s)))
+      return;
+  throw Tool_error(sources.size() == 1
+                     ? "source '" + sources[0].text + "': vertex " + sources[0].text +
+                         " is in no face of the mesh, so it reaches no other vertex"
+                     : std::string("every source is a vertex in no face of the mesh, so they reach no other vertex"));
+}
 
 /// The library call for one concurrency tag; `approximation` is a named parameter that is
 /// either present or absent, so it is chosen here rather than given a neutral value.
@@ -122,19 +153,15 @@ void solve(const Mesh& mesh, Distance_map distance, const LibrarySources& source
 }
 
 template <class ConcurrencyTag>
-Path_result trace_path_with(const Mesh& mesh, const Polygons& polygons, const std::vector<Surface_point>& sources,
+Path_result trace_path_with(const Mesh_file& file, const std::vector<Surface_point>& sources,
                             const Surface_point& target, const Solver_choice& choice)
 {
   typedef CGAL_ext::Surface_mesh_geodesic_paths<Mesh, ConcurrencyTag> Paths;
   Path_result result;
   const Stopwatch build_watch;
-  Paths paths(mesh);
-  for(const Surface_point& s : sources) {
-    if(s.vertex)
-      paths.add_source(vertex_of(s));
-    else
-      paths.add_source(library_location(mesh, polygons, s));
-  }
+  Paths paths(file.mesh);
+  for(const Surface_point& s : sources)
+    with_library_point(file, s, "source", [&](const auto& point) { paths.add_source(point); });
   {
     const Thread_allowance allowance(choice.algorithm->parallel ? choice.threads : 0);
     paths.build(CGAL_ext::parameters::max_distance(choice.max_distance)
@@ -155,10 +182,7 @@ Path_result trace_path_with(const Mesh& mesh, const Polygons& polygons, const st
     result.nearest_source = paths.nearest_source(point);
     paths.shortest_path_points(point, std::back_inserter(result.points));
   };
-  if(target.vertex)
-    query(vertex_of(target));
-  else
-    query(library_location(mesh, polygons, target));
+  with_library_point(file, target, "target", query);
   result.seconds_query = query_watch.seconds();
   if(result.points.empty() || result.nearest_source >= sources.size())
     throw Tool_error("internal error: no path to target '" + target.text + "' at distance " +
@@ -177,9 +201,11 @@ int effective_threads(const Solver_choice& choice)
   return choice.threads;
 }
 
-Distance_map compute_distances(Mesh& mesh, const Polygons& polygons, const std::vector<Surface_point>& sources,
-                               const Solver_choice& choice, CGAL_ext::Geodesic_statistics& stats)
+std::vector<double> compute_distances(Mesh_file& file, const std::vector<Surface_point>& sources,
+                                      const Solver_choice& choice, CGAL_ext::Geodesic_statistics& stats)
 {
+  check_a_source_is_on_a_face(file, sources);
+  Mesh& mesh = file.mesh;
   auto distance = mesh.add_property_map<Vertex_index, double>("v:distance", infinity).first;
   // The library takes a range of one kind of source: vertices, or face locations.
   const bool only_vertices =
@@ -187,22 +213,25 @@ Distance_map compute_distances(Mesh& mesh, const Polygons& polygons, const std::
   if(only_vertices) {
     std::vector<Vertex_index> vertices;
     for(const Surface_point& s : sources)
-      vertices.push_back(vertex_of(s));
+      vertices.push_back(mesh_vertex(file, s));
     solve(mesh, distance, vertices, choice, stats);
   } else {
     std::vector<Face_location> locations;
     for(const Surface_point& s : sources)
-      locations.push_back(s.vertex ? vertex_location(mesh, s) : library_location(mesh, polygons, s));
+      locations.push_back(s.vertex ? vertex_location(file, s) : library_location(file, s, "source"));
     solve(mesh, distance, locations, choice, stats);
   }
-  return distance;
+  std::vector<double> distance_of_point;
+  for(Vertex_index v : file.vertex_of_point)
+    distance_of_point.push_back(distance[v]);
+  return distance_of_point;
 }
 
-Path_result trace_path(const Mesh& mesh, const Polygons& polygons, const std::vector<Surface_point>& sources,
+Path_result trace_path(const Mesh_file& file, const std::vector<Surface_point>& sources,
                        const Surface_point& target, const Solver_choice& choice)
 {
-  return choice.algorithm->parallel ? trace_path_with<Parallel_tag>(mesh, polygons, sources, target, choice)
-                                    : trace_path_with<CGAL::Sequential_tag>(mesh, polygons, sources, target, choice);
+  return choice.algorithm->parallel ? trace_path_with<Parallel_tag>(file, sources, target, choice)
+                                    : trace_path_with<CGAL::Sequential_tag>(file, sources, target, choice);
 }
 
 } // namespace geodesic_tool

@@ -19,9 +19,11 @@ namespace geodesic_tool {
 /// The number of threads a parallel solver runs on.
 int effective_threads(const Solver_choice& choice);
 
-/// Runs the library and stores the distances in the vertex property "v:distance".
-Distance_map compute_distances(Mesh& mesh, const Polygons& polygons, const std::vector<Surface_point>& sources,
-                               const Solver_choice& choice, CGAL_ext::Geodesic_statistics& stats);
+/// Runs the library; returns the distance of each point of the file (merged points share theirs).
+/// Throws Tool_error when a face point's face is not a triangle of the mesh, or when every source
+/// is a vertex in no face.
+std::vector<double> compute_distances(Mesh_file& file, const std::vector<Surface_point>& sources,
+                                      const Solver_choice& choice, CGAL_ext::Geodesic_statistics& stats);
 
 /// A shortest path and what it took.
 struct Path_result
@@ -35,8 +37,8 @@ struct Path_result
 };
 
 /// Builds the windows from `sources` with the chosen MMP solver and traces the path to `target`;
-/// throws Tool_error if no source reaches the target.
-Path_result trace_path(const Mesh& mesh, const Polygons& polygons, const std::vector<Surface_point>& sources,
+/// throws Tool_error if no source reaches the target, or for a face point as compute_distances().
+Path_result trace_path(const Mesh_file& file, const std::vector<Surface_point>& sources,
                        const Surface_point& target, const Solver_choice& choice);
 
 } // namespace geodesic_tool

@@ -16,7 +16,7 @@ double peak_rss_mb()
   return double(usage.ru_maxrss) / 1024.; // kilobytes on Linux
 }
 
-void write_input_stats(std::ostream& s, const Solver_choice& choice, const Mesh& mesh, std::size_t sources,
+void write_input_stats(std::ostream& s, const Solver_choice& choice, const Mesh_file& file, std::size_t sources,
                        double seconds_read)
 {
   s << "algorithm=" << choice.algorithm->name << "\n";
@@ -24,8 +24,16 @@ void write_input_stats(std::ostream& s, const Solver_choice& choice, const Mesh&
     s << "threads=" << effective_threads(choice) << "\n";
   if(choice.algorithm->approximate)
     s << "lambda=" << number_text(choice.lambda) << "\n";
-  s << "vertices=" << mesh.number_of_vertices() << "\n"
-    << "faces=" << mesh.number_of_faces() << "\n"
+  const CGAL_ext::Geodesic_mesh_repairs& repairs = file.repairs;
+  s << "vertices=" << file.soup.points.size() << "\n"
+    << "faces=" << file.soup.polygons.size() << "\n"
+    << "merged_points=" << repairs.merged_points << "\n"
+    << "removed_polygons=" << repairs.removed_polygons << "\n"
+    << "split_polygons=" << repairs.split_polygons << "\n"
+    << "triangulated_polygons=" << repairs.triangulated_polygons << "\n"
+    << "reversed_polygons=" << repairs.reversed_polygons << "\n"
+    << "duplicated_points=" << repairs.duplicated_points << "\n"
+    << "isolated_points=" << repairs.isolated_points << "\n"
     << "sources=" << sources << "\n"
     << "seconds_read=" << seconds_read << "\n";
 }

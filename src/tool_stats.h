@@ -28,8 +28,9 @@ private:
 /// The peak resident memory of the process so far, in MiB.
 double peak_rss_mb();
 
-/// The first lines of --stats: the solver, the mesh and the reading.
-void write_input_stats(std::ostream& s, const Solver_choice& choice, const Mesh& mesh, std::size_t sources,
+/// The first lines of --stats: the solver, the file (its points and polygons), what was
+/// repaired to make its mesh, and the reading.
+void write_input_stats(std::ostream& s, const Solver_choice& choice, const Mesh_file& file, std::size_t sources,
                        double seconds_read);
 
 /// What the library reports of a solver run; the MMP family adds its own.

@@ -15,6 +15,7 @@
 #include <CGAL_ext/geodesic_distances.h>
 
 #include <CGAL/IO/PLY.h>
+#include <CGAL/IO/polygon_soup_io.h>
 
 #include <CLI/CLI.hpp>
 
@@ -47,10 +48,11 @@ using CGAL_ext::polyline_length;
 // the tool's mesh, read and built the tool's way
 using tool::Face_index;
 using tool::Mesh;
+using tool::Mesh_file;
 using tool::Point;
+using tool::read_mesh_file;
 using tool::read_soup;
 using tool::Soup;
-using tool::soup_to_mesh;
 using tool::Vertex_index;
 
 const std::string elephant = std::string(CGAL_EXT_DATA_DIR) + "/elephant.off";
@@ -241,14 +243,15 @@ std::array<std::size_t, 3> library_corners(const Mesh& mesh, Face_index f)
   return corners;
 }
 
-/// The library called directly, on the mesh built from the soup the way the tool builds it.
+/// The library called directly, on the mesh the tool makes of the file; the distances of the
+/// file's points.
 template <class Sources>
-std::vector<double> library_distances(const Mesh& mesh, const Sources& sources)
+std::vector<double> library_distances(const Mesh_file& file, const Sources& sources)
 {
-  auto distance = get(CGAL::dynamic_vertex_property_t<double>(), mesh);
-  CGAL_ext::geodesic_distances(mesh, distance, sources);
+  auto distance = get(CGAL::dynamic_vertex_property_t<double>(), file.mesh);
+  CGAL_ext::geodesic_distances(file.mesh, distance, sources);
   std::vector<double> d;
-  for(Vertex_index v : mesh.vertices())
+  for(Vertex_index v : file.vertex_of_point)
     d.push_back(get(distance, v));
   return d;
 }
@@ -317,15 +320,23 @@ protected:
     return r;
   }
 
-  /// Runs the tool with `--output output` and expects success, with nothing on stdout or
-  /// stderr; returns the text of `output`.
-  std::string output_of(const std::string& args, const std::string& output) const
+  /// Runs the tool with `--output output` and expects success, with nothing on stdout and
+  /// `err` on stderr; returns the text of `output`.
+  std::string output_of(const std::string& args, const std::string& output, const std::string& err = "") const
   {
     const Result r = run(args + " --output " + output);
     EXPECT_EQ(r.exit_code, 0) << r.err;
     EXPECT_EQ(r.out, "");
-    EXPECT_EQ(r.err, "");
+    EXPECT_EQ(r.err, err);
     return read_text(path(output));
+  }
+
+  /// Runs the tool on a mesh it repairs, as `output_of` does, expecting the line `note: <note>`
+  /// on stderr; returns the distances of `output`.
+  std::vector<double> repaired_distances(const std::string& args, const std::string& note,
+                                         const std::string& output = "d.txt") const
+  {
+    return parse_distances(output_of(args, output, "note: " + note + "\n"));
   }
 
   /// Runs the tool as `output_of` does; returns the distances of `output`.
@@ -366,25 +377,27 @@ protected:
 // ---------------------------------------------------------------------------------------------
 // What the tool relies on
 
-// The tool maps file ids to mesh ids by identity; this holds only because CGAL's
-// polygon_soup_to_polygon_mesh() adds the points and then the polygons in order.
-TEST_F(Tool, soup_to_mesh_keeps_the_file_order)
+// A clean file is its mesh as it is: vertex i is point i and face j polygon j, in the same
+// cyclic order (the tests below that compare ids of the mesh and of the file rely on it).
+TEST_F(Tool, the_mesh_of_a_clean_file_keeps_the_file_order)
 {
-  for(const std::string& file : {elephant, mushroom}) {
-    const Soup soup = read_soup(file);
-    const Mesh mesh = soup_to_mesh(soup);
-    ASSERT_EQ(mesh.number_of_vertices(), soup.points.size());
-    ASSERT_EQ(mesh.number_of_faces(), soup.polygons.size());
-    for(Vertex_index v : mesh.vertices())
-      ASSERT_EQ(mesh.point(v), soup.points[v]) << file << " vertex " << v;
-    for(Face_index f : mesh.faces()) {
-      // same vertices, same cyclic order
-      const std::array<std::size_t, 3> c = library_corners(mesh, f);
-      const auto& p = soup.polygons[f];
+  for(const std::string& name : {elephant, mushroom}) {
+    const Mesh_file file = read_mesh_file(name);
+    const Soup& soup = file.soup;
+    EXPECT_FALSE(file.repairs.changed()) << file.repairs.summary();
+    EXPECT_EQ(file.repairs.summary(), "");
+    ASSERT_EQ(file.mesh.number_of_vertices(), soup.points.size());
+    ASSERT_EQ(file.mesh.number_of_faces(), soup.polygons.size());
+    for(std::size_t i = 0; i < soup.points.size(); ++i)
+      ASSERT_EQ(file.vertex_of_point[i], Vertex_index(Mesh::size_type(i))) << name << " vertex " << i;
+    for(std::size_t j = 0; j < soup.polygons.size(); ++j) {
+      ASSERT_EQ(file.face_of_polygon[j], Face_index(Mesh::size_type(j))) << name << " face " << j;
+      const std::array<std::size_t, 3> c = library_corners(file.mesh, file.face_of_polygon[j]);
+      const auto& p = soup.polygons[j];
       const auto at = std::find(p.begin(), p.end(), c[0]) - p.begin();
-      ASSERT_LT(at, 3) << file << " face " << f;
-      ASSERT_EQ(c[1], p[(at + 1) % 3]) << file << " face " << f;
-      ASSERT_EQ(c[2], p[(at + 2) % 3]) << file << " face " << f;
+      ASSERT_LT(at, 3) << name << " face " << j;
+      ASSERT_EQ(c[1], p[(at + 1) % 3]) << name << " face " << j;
+      ASSERT_EQ(c[2], p[(at + 2) % 3]) << name << " face " << j;
     }
   }
 }
@@ -714,7 +727,7 @@ TEST(Tool_command_line, bad_command_lines_name_the_argument)
 // ---------------------------------------------------------------------------------------------
 // The writers, called directly
 
-/// A tetrahedron built the tool's way, with `d` in its vertex property "v:distance".
+/// A tetrahedron's points and triangles as a file holds them, and a distance for each point.
 class Tool_output : public Tool
 {
 protected:
@@ -722,31 +735,32 @@ protected:
   {
     soup.points = {Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(0, 0, 1)};
     soup.polygons = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}};
-    tool::check_soup(soup);
-    mesh = soup_to_mesh(soup);
-    distance = mesh.add_property_map<Vertex_index, double>("v:distance").first;
-    for(Vertex_index v : mesh.vertices())
-      distance[v] = d[v];
+  }
+
+  /// The PLY `name` read back as a soup with CGAL: its points and polygons.
+  Soup read_ply_soup(const std::string& name) const
+  {
+    Soup read;
+    std::ifstream in(path(name), std::ios::binary);
+    EXPECT_TRUE(CGAL::IO::read_PLY(in, read.points, read.polygons));
+    return read;
   }
 
   const std::vector<double> d = {0., 0.1, 1. / 3, infinity}; // vertex 3 unreached
   Soup soup;
-  Mesh mesh;
-  tool::Distance_map distance;
 };
 
 TEST_F(Tool_output, distances_txt_reads_back_exactly)
 {
   std::ostringstream os;
-  ASSERT_TRUE(tool::write_distances_txt(os, mesh, distance));
+  ASSERT_TRUE(tool::write_distances_txt(os, d));
   EXPECT_EQ(os.str(), "0\n0.10000000000000001\n0.33333333333333331\ninf\n");
   EXPECT_EQ(parse_distances(os.str()), d);
 }
 
 TEST_F(Tool_output, distances_ply_reads_back_with_cgal)
 {
-  tool::write_output(path("d.ply").string(),
-                     [&](std::ostream& os) { return tool::write_distances_ply(os, mesh, distance); });
+  tool::write_output(path("d.ply").string(), [&](std::ostream& os) { return tool::write_distances_ply(os, soup, d); });
   EXPECT_EQ(files(), std::set<std::string>{"d.ply"});
   Distances_ply ply;
   ASSERT_NO_FATAL_FAILURE(read_distances_ply(path("d.ply"), ply));
@@ -760,7 +774,28 @@ TEST_F(Tool_output, distances_ply_reads_back_with_cgal)
   EXPECT_EQ(ply.colors[0], CGAL::IO::Color(0, 0, 255));
   EXPECT_EQ(ply.colors[2], CGAL::IO::Color(255, 0, 0));
   EXPECT_EQ(ply.colors[3], CGAL::IO::Color(128, 128, 128));
-  EXPECT_EQ(tool::farthest_finite(mesh, distance), 1. / 3);
+  EXPECT_EQ(tool::farthest_finite(d), 1. / 3);
+  EXPECT_EQ(read_ply_soup("d.ply").polygons, soup.polygons);
+}
+
+// The PLY holds the file's polygons as they are, whatever their size, and no mesh is made of them.
+TEST_F(Tool_output, distances_ply_keeps_the_file_polygons)
+{
+  // three triangles on edge (0, 1), a quad, and a polygon of 300 points (more than a uchar counts)
+  soup.points.push_back(Point(1, 1, 0));
+  soup.polygons = {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}, {0, 1, 4, 2}};
+  std::vector<std::size_t> large;
+  for(std::size_t i = 0; i < 300; ++i) {
+    large.push_back(soup.points.size());
+    soup.points.push_back(Point(std::cos(i * 0.02), std::sin(i * 0.02), 5));
+  }
+  soup.polygons.push_back(large);
+  const std::vector<double> distances(soup.points.size(), 0.5);
+  tool::write_output(path("d.ply").string(),
+                     [&](std::ostream& os) { return tool::write_distances_ply(os, soup, distances); });
+  const Soup read = read_ply_soup("d.ply");
+  EXPECT_EQ(read.points, soup.points);
+  EXPECT_EQ(read.polygons, soup.polygons);
 }
 
 TEST_F(Tool_output, paths_read_back_exactly)
@@ -833,8 +868,8 @@ TEST_F(Tool, txt_output_on_the_elephant)
   EXPECT_EQ(r.exit_code, 0);
   EXPECT_EQ(r.out, read_text(path("d.txt")));
   EXPECT_EQ(r.err, "");
-  const Mesh mesh = soup_to_mesh(read_soup(elephant));
-  expect_same_distances(d, library_distances(mesh, Vertex_index(0)));
+  const Mesh_file file = read_mesh_file(elephant);
+  expect_same_distances(d, library_distances(file, file.vertex_of_point[0]));
 }
 
 TEST_F(Tool, ply_output_holds_the_txt_distances)
@@ -858,12 +893,13 @@ TEST_F(Tool, ply_output_holds_the_txt_distances)
 // which is not the library's order (source(halfedge(f)) first).
 TEST_F(Tool, face_point_coordinates_follow_the_file_order)
 {
-  const Soup soup = read_soup(elephant);
-  const Mesh mesh = soup_to_mesh(soup);
+  // the elephant's mesh has the file's ids (see the_mesh_of_a_clean_file_keeps_the_file_order)
+  const Mesh_file file = read_mesh_file(elephant);
+  const Soup& soup = file.soup;
   const std::size_t face = 12;
   const std::array<double, 3> b{{0.2, 0.3, 0.5}};
   const std::vector<std::size_t>& polygon = soup.polygons[face];
-  const std::array<std::size_t, 3> corners = library_corners(mesh, Face_index(face));
+  const std::array<std::size_t, 3> corners = library_corners(file.mesh, Face_index(face));
   ASSERT_NE(corners[0], polygon[0]) << "this face does not tell the two orders apart";
 
   const std::vector<double> d = distances("distances '" + elephant + "' --source f:12:0.2:0.3:0.5");
@@ -883,7 +919,7 @@ TEST_F(Tool, face_point_coordinates_follow_the_file_order)
   std::array<double, 3> library_b{};
   for(int k = 0; k < 3; ++k)
     library_b[k] = b[std::find(polygon.begin(), polygon.end(), corners[k]) - polygon.begin()];
-  expect_same_distances(d, library_distances(mesh, std::make_pair(Face_index(face), library_b)));
+  expect_same_distances(d, library_distances(file, std::make_pair(Face_index(face), library_b)));
 }
 
 TEST_F(Tool, several_sources_give_the_nearest_distance)
@@ -958,6 +994,18 @@ bool is_mmp(const std::string& algorithm) { return algorithm == "mmp" || algorit
 const std::vector<std::string> mmp_keys = {"windows_propagated", "windows_stored", "stored_window_bytes",
                                            "seconds_organization", "seconds_clipping", "seconds_pushing"};
 
+/// The keys of what was repaired to make the file a mesh (all 0 for a clean file).
+const std::vector<std::string> repair_keys = {"merged_points",     "removed_polygons",  "split_polygons",
+                                              "triangulated_polygons", "reversed_polygons", "duplicated_points",
+                                              "isolated_points"};
+
+/// Expects every key of `repair_keys` to be 0 in the --stats output parsed as `kv`.
+void expect_no_repair(const std::map<std::string, std::string>& kv)
+{
+  for(const std::string& key : repair_keys)
+    EXPECT_EQ(kv.count(key) ? kv.at(key) : "missing", "0") << key;
+}
+
 class Stats : public Tool, public ::testing::WithParamInterface<Algorithm_case> {};
 
 TEST_P(Stats, on_stderr)
@@ -978,7 +1026,9 @@ TEST_P(Stats, on_stderr)
     keys.push_back("lambda");
   if(is_mmp(c.algorithm))
     keys.insert(keys.end(), mmp_keys.begin(), mmp_keys.end());
+  keys.insert(keys.end(), repair_keys.begin(), repair_keys.end());
   ASSERT_NO_FATAL_FAILURE(expect_non_negative_numbers(kv, keys, r.err));
+  expect_no_repair(kv);
   ASSERT_EQ(kv.count("algorithm"), 1u) << r.err;
   EXPECT_EQ(kv.at("algorithm"), c.algorithm);
   EXPECT_EQ(kv.size(), keys.size() + 1) << r.err;
@@ -1246,9 +1296,11 @@ TEST_F(Tool, path_stats_on_stderr)
                                      "lists_propagated", "wavefront_resets", "peak_rss_mb", "length",
                                      "distance", "points", "nearest_source"};
     keys.insert(keys.end(), mmp_keys.begin(), mmp_keys.end());
+    keys.insert(keys.end(), repair_keys.begin(), repair_keys.end());
     if(algorithm == "pmmp")
       keys.push_back("threads");
     ASSERT_NO_FATAL_FAILURE(expect_non_negative_numbers(kv, keys, r.err));
+    expect_no_repair(kv);
     EXPECT_EQ(kv.size(), keys.size() + 1) << r.err;
     EXPECT_EQ(kv.at("algorithm"), algorithm);
     if(algorithm == "pmmp")
@@ -1320,6 +1372,127 @@ TEST_F(Tool, failed_write_leaves_no_file)
 }
 
 // ---------------------------------------------------------------------------------------------
+// Meshes as users have them: the tool repairs them, says so in one line `note: ...`, and gives
+// its results in the file's order of points.
+
+const std::string unit_square_points = "0 0 0\n1 0 0\n1 1 0\n0 1 0\n";
+
+/// The distances in the plane from `source` to `points`, in their order.
+std::vector<double> planar_distances(const Point& source, const std::vector<Point>& points)
+{
+  std::vector<double> d;
+  for(const Point& p : points)
+    d.push_back(distance_between(source, p));
+  return d;
+}
+
+TEST_F(Tool, a_quad_is_triangulated)
+{
+  write("quad.off", "OFF\n4 1 0\n" + unit_square_points + "4 0 1 2 3\n");
+  const std::vector<double> d = repaired_distances("distances quad.off --source 3", "triangulated 1 polygon");
+  expect_same_distances(d, {1., std::sqrt(2.), 1., 0.}, 1e-15);
+}
+
+// One triangle's points after another's: the copies are merged, and every point of the file has
+// its distance, as a face point of the file has its place.
+TEST_F(Tool, a_soup_is_merged_and_results_follow_the_file)
+{
+  write("soup.off", "OFF\n6 2 0\n0 0 0\n1 0 0\n1 1 0\n0 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 3 4 5\n");
+  const Soup soup = read_soup(path("soup.off").string());
+  const std::string note = "merged 2 duplicate points";
+  const std::vector<double> from_5 = repaired_distances("distances soup.off --source 5", note);
+  expect_same_distances(from_5, planar_distances(soup.points[5], soup.points), 1e-15);
+  const Point p = face_point(soup, 1, {{0.2, 0.3, 0.5}});
+  expect_same_distances(repaired_distances("distances soup.off --source f:1:0.2:0.3:0.5", note),
+                        planar_distances(p, soup.points), 1e-15);
+
+  // the PLY holds the file's six points and two triangles, a distance each
+  output_of("distances soup.off --source 5", "d.ply", "note: " + note + "\n");
+  Distances_ply ply;
+  ASSERT_NO_FATAL_FAILURE(read_distances_ply(path("d.ply"), ply));
+  EXPECT_EQ(ply.points, soup.points);
+  EXPECT_EQ(ply.mesh.number_of_faces(), 2u);
+  expect_same_distances(ply.distances, from_5);
+}
+
+// STL repeats each point in every triangle: the vertex ids are the distinct points in the order
+// of their first appearance, ASCII or binary alike; here the second triangle is also reversed.
+TEST_F(Tool, stl_ascii_and_binary)
+{
+  const auto facet = [](const std::string& a, const std::string& b, const std::string& c) {
+    return "facet normal 0 0 1\nouter loop\nvertex " + a + "\nvertex " + b + "\nvertex " + c +
+           "\nendloop\nendfacet\n";
+  };
+  write("square.stl", "solid square\n" + facet("1 1 0", "0 0 0", "1 0 0") + facet("1 1 0", "0 0 0", "0 1 0") +
+                        "endsolid square\n");
+  const Soup soup = read_soup(path("square.stl").string());
+  const std::vector<Point> first_appearance = {Point(1, 1, 0), Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0)};
+  ASSERT_EQ(soup.points, first_appearance);
+  const std::string note = "merged 2 duplicate points, reversed 1 polygon to orient the surface";
+  const std::vector<double> ascii = repaired_distances("distances square.stl --source 2", note);
+  expect_same_distances(ascii, planar_distances(Point(1, 0, 0), first_appearance), 1e-15);
+
+  ASSERT_TRUE(CGAL::IO::write_polygon_soup(path("binary.stl").string(), soup.points, soup.polygons,
+                                           CGAL::parameters::use_binary_mode(true)));
+  EXPECT_EQ(read_soup(path("binary.stl").string()).points, first_appearance);
+  EXPECT_EQ(repaired_distances("distances binary.stl --source 2", note), ascii);
+
+  const Result r = run("distances square.stl --source 2 --stats --output d.txt");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(lines_of(r.err).front(), "note: " + note);
+  const auto kv = parse_key_values(r.err.substr(r.err.find('\n') + 1));
+  EXPECT_EQ(kv.at("vertices"), "4");
+  EXPECT_EQ(kv.at("faces"), "2");
+  EXPECT_EQ(kv.at("merged_points"), "2");
+  EXPECT_EQ(kv.at("reversed_polygons"), "1");
+  EXPECT_EQ(kv.at("duplicated_points"), "0");
+}
+
+// Two triangles meeting at vertex 0 only: the vertex is split to make a mesh and glued again by
+// the solvers, so distances and paths go through it.
+TEST_F(Tool, a_non_manifold_vertex_is_passed_through)
+{
+  write("bowtie.off", "OFF\n5 2 0\n0 0 0\n1 0 0\n0 1 0\n-1 0 0\n0 -1 0\n3 0 1 2\n3 0 3 4\n");
+  const std::string note =
+    "duplicated 1 point at non-manifold vertices or edges (glued again: geodesics pass through them)";
+  expect_same_distances(repaired_distances("distances bowtie.off --source 1", note),
+                        {1., 0., std::sqrt(2.), 2., 2.}, 1e-15);
+  const std::vector<Point> p = parse_points(output_of("path bowtie.off --source 1 --target 3", "p.txt",
+                                                      "note: " + note + "\n"));
+  ASSERT_GE(p.size(), 3u);
+  EXPECT_EQ(p.front(), Point(1, 0, 0));
+  EXPECT_EQ(p.back(), Point(-1, 0, 0));
+  EXPECT_NEAR(polyline_length(p), 2., 1e-15);
+}
+
+// Three triangles on edge (0, 1) and an isolated point; every point of the file has a distance.
+TEST_F(Tool, a_non_manifold_edge_and_an_isolated_point)
+{
+  write("edge3.off", "OFF\n6 3 0\n0 0 0\n1 0 0\n0 1 0\n0 -1 0\n0 0 1\n7 7 7\n3 0 1 2\n3 1 0 3\n3 1 0 4\n");
+  const std::vector<double> d =
+    repaired_distances("distances edge3.off --source 0",
+                       "duplicated 4 points at non-manifold vertices or edges (glued again: geodesics pass "
+                       "through them), 1 point is in no face (at infinite distance)");
+  expect_same_distances(d, {0., 1., 1., 1., 1., infinity}, 1e-15);
+}
+
+// A face point on a triangle that orienting the surface reversed keeps the file's order.
+TEST_F(Tool, a_face_point_on_a_reversed_triangle)
+{
+  write("flipped.off", "OFF\n4 2 0\n" + unit_square_points + "3 0 1 2\n3 0 3 2\n");
+  const Soup soup = read_soup(path("flipped.off").string());
+  const std::string note = "reversed 1 polygon to orient the surface";
+  const Point p = face_point(soup, 1, {{0.6, 0.3, 0.1}});
+  expect_same_distances(repaired_distances("distances flipped.off --source f:1:0.6:0.3:0.1", note),
+                        planar_distances(p, soup.points), 1e-15);
+  const std::vector<Point> path = parse_points(output_of("path flipped.off --source 1 --target f:1:0.6:0.3:0.1",
+                                                         "p.txt", "note: " + note + "\n"));
+  ASSERT_GE(path.size(), 2u);
+  EXPECT_LT(distance_between(path.back(), p), 1e-15);
+  EXPECT_NEAR(polyline_length(path), distance_between(soup.points[1], p), 1e-15);
+}
+
+// ---------------------------------------------------------------------------------------------
 // Bad input: one line `error: ...` on stderr, a non-zero exit code, and no output file.
 
 struct Bad_case
@@ -1350,18 +1523,21 @@ const std::string triangle_points = "0 0 0\n1 0 0\n0 1 0\n";
 
 const std::vector<std::pair<std::string, std::string>> bad_files = {
   {"quad.off", "OFF\n4 1 0\n" + triangle_points + "1 1 0\n4 0 1 3 2\n"},
-  // edge (0, 1) in three triangles
-  {"edge3.off", "OFF\n5 3 0\n" + triangle_points + "0 -1 0\n0 0 1\n3 0 1 2\n3 1 0 3\n3 1 0 4\n"},
-  // two triangles touching at vertex 0 only
-  {"bowtie.off", "OFF\n5 2 0\n" + triangle_points + "-1 0 0\n0 -1 0\n3 0 1 2\n3 0 3 4\n"},
-  {"flipped.off", "OFF\n4 2 0\n" + triangle_points + "1 1 0\n3 0 1 2\n3 1 2 3\n"},
   {"nan.ply", binary_ply_with_nan()},
   {"nan.off", "OFF\n3 1 0\n0 0 0\n1 0 nan\n0 1 0\n3 0 1 2\n"},
   {"empty.off", ""},
   {"no_faces.off", "OFF\n3 0 0\n" + triangle_points},
   {"flat.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n2 0 0\n3 0 1 2\n"},
-  {"mesh.stl", "solid x\nendsolid x\n"},
+  {"flat_quad.off", "OFF\n4 1 0\n0 0 0\n1 0 0\n2 0 0\n3 0 0\n4 0 1 2 3\n"},
+  // point 3 is point 0 again: the only triangle has 2 distinct points
+  {"segment.off", "OFF\n4 1 0\n" + triangle_points + "0 0 0\n3 0 1 3\n"},
+  {"with_segment.off", "OFF\n4 2 0\n" + triangle_points + "0 0 0\n3 0 1 3\n3 0 1 2\n"},
+  {"out_of_range.off", "OFF\n3 1 0\n" + triangle_points + "3 0 1 7\n"},
+  {"empty.stl", "solid x\nendsolid x\n"},
+  {"mesh.vtk", "# vtk DataFile Version 2.0\n"},
   {"triangle.off", "OFF\n3 1 0\n" + triangle_points + "3 0 1 2\n"},
+  // point 3 in no face
+  {"isolated.off", "OFF\n4 1 0\n" + triangle_points + "5 5 5\n3 0 1 2\n"},
   // two triangles that share nothing: two connected components
   {"two.off", "OFF\n6 2 0\n" + triangle_points + "10 0 0\n11 0 0\n10 1 0\n3 0 1 2\n3 3 4 5\n"},
 };
@@ -1370,17 +1546,29 @@ const std::string E = "distances '" + elephant + "'";
 const std::string P = "path '" + elephant + "'";
 
 const Bad_case bad_cases[] = {
-  {"quad", "distances quad.off --source 0", "d.txt", "face 0 has 4 vertices"},
-  {"non_manifold_edge", "distances edge3.off --source 0", "d.txt", "non-manifold edge (0, 1)"},
-  {"non_manifold_vertex", "distances bowtie.off --source 0", "d.txt", "non-manifold vertex 0"},
-  {"inconsistent_orientation", "distances flipped.off --source 0", "d.txt", "inconsistently oriented across edge (1, 2)"},
-  {"nan_coordinate", "distances nan.ply --source 0", "d.ply", "vertex 2 has a non-finite coordinate"},
+  {"face_point_on_a_quad", "distances quad.off --source f:0:0.2:0.3:0.5", "d.txt",
+   "error: source 'f:0:0.2:0.3:0.5': face 0 of the file is not a triangle of the surface (it has 4 vertices)"},
+  {"face_point_on_a_segment", "distances with_segment.off --source 1,f:0:0.2:0.3:0.5", "d.txt",
+   "face 0 of the file is not a triangle of the surface (its 3 vertices are not distinct points)"},
+  {"nan_coordinate", "distances nan.ply --source 0", "d.ply", "error: point 2 has a non-finite coordinate (0, nan, 0)"},
   {"nan_text", "distances nan.off --source 0", "d.txt", "cannot read mesh 'nan.off'"},
   {"empty_file", "distances empty.off --source 0", "d.txt", "empty.off"},
-  {"no_faces", "distances no_faces.off --source 0", "d.txt", "no faces"},
+  {"point_cloud", "distances no_faces.off --source 0", "d.txt",
+   "error: no faces: the soup has 3 points and no polygon (a point cloud)"},
+  {"empty_stl", "distances empty.stl --source 0", "d.txt", "error: no faces: the soup is empty"},
+  {"nothing_left", "distances segment.off --source 0", "d.ply",
+   "error: no faces left: the only polygon has fewer than 3 distinct points"},
+  {"index_out_of_range", "distances out_of_range.off --source 0", "d.txt", "cannot read mesh 'out_of_range.off'"},
   {"degenerate_triangle", "distances flat.off --source 0", "d.txt", "degenerate"},
+  {"flat_quad", "distances flat_quad.off --source 0", "d.txt",
+   "error: polygon 0 (4 points) cannot be triangulated without new points"},
+  {"isolated_source", "distances isolated.off --source 3", "d.txt",
+   "error: source '3': vertex 3 is in no face of the mesh, so it reaches no other vertex"},
+  {"isolated_sources", "distances isolated.off --source 3,3", "d.ply", "error: every source is a vertex in no face"},
+  {"isolated_source_with_a_face_point", "distances isolated.off --source 3,f:0:1:0:0", "d.txt",
+   "source '3': an isolated vertex cannot be mixed with face-point sources"},
   {"missing_file", "distances missing.off --source 0", "d.txt", "cannot read mesh 'missing.off'"},
-  {"unknown_mesh_format", "distances mesh.stl --source 0", "d.txt", "cannot read mesh 'mesh.stl'"},
+  {"unknown_mesh_format", "distances mesh.vtk --source 0", "d.txt", "cannot read mesh 'mesh.vtk'"},
   {"unknown_output_format", "distances triangle.off --source 0", "d.vtk", "unknown output format"},
   {"vertex_out_of_range", E + " --source 0,2775", "d.txt", "source '2775'"},
   {"face_out_of_range", E + " --source f:5558:0.2:0.3:0.5", "d.ply", "source 'f:5558:0.2:0.3:0.5'"},
@@ -1459,10 +1647,12 @@ const Bad_case bad_cases[] = {
   {"path_batch_size_zero", P + " --source 0 --target 5 --algorithm pmmp --batch-size 0", "p.txt", "--batch-size must be"},
   {"path_negative_max_distance", P + " --source 0 --target 5 --max-distance=-1", "p.txt", "max-distance"},
   {"path_unknown_output_format", P + " --source 0 --target 5", "p.vtk", "unknown output format 'p.vtk' (use .txt, .obj or .ply)"},
-  {"path_quad", "path quad.off --source 0 --target 1", "p.txt", "face 0 has 4 vertices"},
-  {"path_non_manifold_edge", "path edge3.off --source 0 --target 1", "p.obj", "non-manifold edge (0, 1)"},
-  {"path_non_manifold_vertex", "path bowtie.off --source 0 --target 3", "p.txt", "non-manifold vertex 0"},
-  {"path_nan_coordinate", "path nan.ply --source 0 --target 1", "p.ply", "vertex 2 has a non-finite coordinate"},
+  {"path_face_point_on_a_quad", "path quad.off --source 0 --target f:0:1:0:0", "p.txt",
+   "error: target 'f:0:1:0:0': face 0 of the file is not a triangle of the surface (it has 4 vertices)"},
+  {"path_source_on_a_quad", "path quad.off --source f:0:1:0:0 --target 2", "p.obj", "source 'f:0:1:0:0': face 0"},
+  {"path_isolated_target", "path isolated.off --source 0 --target 3", "p.txt", "target '3' is not reached"},
+  {"path_point_cloud", "path no_faces.off --source 0 --target 1", "p.txt", "a point cloud"},
+  {"path_nan_coordinate", "path nan.ply --source 0 --target 1", "p.ply", "point 2 has a non-finite coordinate"},
   {"path_degenerate_triangle", "path flat.off --source 0 --target 1", "p.txt", "degenerate"},
   {"path_missing_file", "path missing.off --source 0 --target 1", "p.txt", "cannot read mesh 'missing.off'"},
 };
