@@ -15,6 +15,7 @@
 #include <cstdlib>
 #include <iostream>
 #include <string>
+#include <iterator>
 #include <vector>
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
@@ -51,15 +52,16 @@ int main(int argc, char** argv)
     // vertex_of_point[i]: the vertex of input point i (merged points share one)
     Mesh mesh;
     std::vector<vertex_descriptor> vertex_of_point;
-    const CGAL_ext::Geodesic_mesh_repairs repairs =
-      CGAL_ext::polygon_soup_to_geodesic_mesh(points, polygons, mesh, vertex_of_point);
+    std::vector<std::vector<vertex_descriptor>> glued; // copies of a point at a non-manifold vertex or edge
+    const CGAL_ext::Geodesic_mesh_repairs repairs = CGAL_ext::polygon_soup_to_geodesic_mesh(
+      points, polygons, mesh, vertex_of_point, CGAL_ext::parameters::glued_vertices_output(std::back_inserter(glued)));
     std::cout << points.size() << " points and " << polygons.size() << " polygons: a mesh of "
               << mesh.number_of_vertices() << " vertices and " << mesh.number_of_faces() << " triangles\n";
     if(!repairs.summary().empty())
       std::cout << "  " << repairs.summary() << "\n";
 
     auto distance = mesh.add_property_map<vertex_descriptor, double>("v:distance", 0.).first;
-    CGAL_ext::geodesic_distances(mesh, distance, vertex_of_point[0]);
+    CGAL_ext::geodesic_distances(mesh, distance, vertex_of_point[0], CGAL_ext::parameters::glued_vertices(glued));
 
     // every input point has its distance
     std::size_t farthest = 0;

@@ -29,8 +29,9 @@ Mesh_file make_mesh_file(Soup soup)
 {
   Mesh_file file;
   file.soup = std::move(soup);
-  file.repairs = CGAL_ext::polygon_soup_to_geodesic_mesh(file.soup.points, file.soup.polygons, file.mesh,
-                                                         file.vertex_of_point, file.face_of_polygon);
+  file.repairs = CGAL_ext::polygon_soup_to_geodesic_mesh(
+    file.soup.points, file.soup.polygons, file.mesh, file.vertex_of_point, file.face_of_polygon,
+    CGAL_ext::parameters::glued_vertices_output(std::back_inserter(file.glued_vertices)));
   file.repairs.merged_points += file.soup.points_merged_when_read;
   return file;
 }

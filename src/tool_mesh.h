@@ -50,6 +50,7 @@ struct Mesh_file
   std::vector<Vertex_index> vertex_of_point; // per point of the file
   std::vector<Face_index> face_of_polygon;   // per polygon of the file; null unless a triangle kept as is
   CGAL_ext::Geodesic_mesh_repairs repairs;
+  std::vector<std::vector<Vertex_index>> glued_vertices; // the vertices of each point duplicated by the repair
 };
 
 /// The mesh of the soup, through CGAL_ext::polygon_soup_to_geodesic_mesh() (which throws

@@ -137,10 +137,12 @@ void solve_with(const Mesh& mesh, Distance_map distance, const LibrarySources& s
 
 /// The one place that maps the algorithm choice to the library call.
 template <class LibrarySources>
-void solve(const Mesh& mesh, Distance_map distance, const LibrarySources& sources, const Solver_choice& choice,
+void solve(const Mesh_file& file, Distance_map distance, const LibrarySources& sources, const Solver_choice& choice,
            CGAL_ext::Geodesic_statistics& stats)
 {
-  const auto np = CGAL_ext::parameters::max_distance(choice.max_distance)
+  const Mesh& mesh = file.mesh;
+  const auto np = CGAL_ext::parameters::glued_vertices(file.glued_vertices)
+                    .max_distance(choice.max_distance)
                     .statistics(stats)
                     .batch_size(choice.batch_size)
                     .algorithm(choice.algorithm->library);
@@ -159,7 +161,7 @@ Path_result trace_path_with(const Mesh_file& file, const std::vector<Surface_poi
   typedef CGAL_ext::Surface_mesh_geodesic_paths<Mesh, ConcurrencyTag> Paths;
   Path_result result;
   const Stopwatch build_watch;
-  Paths paths(file.mesh);
+  Paths paths(file.mesh, CGAL_ext::parameters::glued_vertices(file.glued_vertices));
   for(const Surface_point& s : sources)
     with_library_point(file, s, "source", [&](const auto& point) { paths.add_source(point); });
   {
@@ -214,12 +216,12 @@ std::vector<double> compute_distances(Mesh_file& file, const std::vector<Surface
     std::vector<Vertex_index> vertices;
     for(const Surface_point& s : sources)
       vertices.push_back(mesh_vertex(file, s));
-    solve(mesh, distance, vertices, choice, stats);
+    solve(file, distance, vertices, choice, stats);
   } else {
     std::vector<Face_location> locations;
     for(const Surface_point& s : sources)
       locations.push_back(s.vertex ? vertex_location(file, s) : library_location(file, s, "source"));
-    solve(mesh, distance, locations, choice, stats);
+    solve(file, distance, locations, choice, stats);
   }
   std::vector<double> distance_of_point;
   for(Vertex_index v : file.vertex_of_point)

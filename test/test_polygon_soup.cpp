@@ -25,6 +25,7 @@
 #include <limits>
 #include <map>
 #include <string>
+#include <iterator>
 #include <vector>
 
 namespace {
@@ -40,13 +41,16 @@ struct Prepared
   Mesh mesh;
   std::vector<Vertex> vertex_of_point;
   std::vector<Face> face_of_polygon;
+  std::vector<std::vector<Vertex>> glued; // the vertices of each duplicated point
   CGAL_ext::Geodesic_mesh_repairs repairs;
 };
 
 Prepared prepare(const std::vector<Point>& points, const Polygons& polygons)
 {
   Prepared p;
-  p.repairs = CGAL_ext::polygon_soup_to_geodesic_mesh(points, polygons, p.mesh, p.vertex_of_point, p.face_of_polygon);
+  p.repairs = CGAL_ext::polygon_soup_to_geodesic_mesh(
+    points, polygons, p.mesh, p.vertex_of_point, p.face_of_polygon,
+    CGAL_ext::parameters::glued_vertices_output(std::back_inserter(p.glued)));
   return p;
 }
 
@@ -100,7 +104,8 @@ std::string error_of(const Points& points, const PolygonRange& polygons)
 std::vector<double> point_distances(const Prepared& p, std::size_t source)
 {
   auto distance = get(CGAL::dynamic_vertex_property_t<double>(), p.mesh);
-  CGAL_ext::geodesic_distances(p.mesh, distance, p.vertex_of_point[source]);
+  CGAL_ext::geodesic_distances(p.mesh, distance, p.vertex_of_point[source],
+                               CGAL_ext::parameters::glued_vertices(p.glued));
   std::vector<double> result;
   for(Vertex v : p.vertex_of_point)
     result.push_back(get(distance, v));
@@ -212,10 +217,18 @@ TEST(Polygon_soup_to_geodesic_mesh, two_tetrahedra_sharing_a_vertex)
             "duplicated 1 point at non-manifold vertices or edges (glued again: geodesics pass through them)");
   EXPECT_EQ(p.mesh.number_of_vertices(), 8u);
   EXPECT_TRUE(CGAL::is_closed(p.mesh));
+  ASSERT_EQ(p.glued.size(), 1u);
+  ASSERT_EQ(p.glued[0].size(), 2u);
+  EXPECT_EQ(p.glued[0][0], p.vertex_of_point[0]);
+  EXPECT_EQ(p.mesh.point(p.glued[0][1]), points[0]);
   const std::vector<double> d = point_distances(p, 1);
   EXPECT_NEAR(d[0], 1., 1e-15);
   for(std::size_t v : {4, 5, 6})
     EXPECT_NEAR(d[v], 2., 1e-15) << "point " << v;
+  // without the groups, the tetrahedra are apart
+  auto apart = get(CGAL::dynamic_vertex_property_t<double>(), p.mesh);
+  CGAL_ext::geodesic_distances(p.mesh, apart, p.vertex_of_point[1]);
+  EXPECT_EQ(get(apart, p.vertex_of_point[5]), inf);
 }
 
 // Three triangles on the edge (0, 1): CGAL cuts them apart along it; the copies of its end

@@ -32,9 +32,10 @@ namespace CGAL_ext {
 ///   points have no area);
 /// - the polygons are oriented consistently; where the surface is not a manifold (more than two
 ///   polygons on an edge, polygons meeting at a point only, orientation conflicts) points are
-///   duplicated (`orient_polygon_soup()`). The solvers glue vertices at one position together
-///   again, so geodesics pass through such a vertex; across a non-manifold edge they pass through
-///   its end points only;
+///   duplicated (`orient_polygon_soup()`). The named parameter `glued_vertices_output` gives the
+///   vertices of each duplicated point; given to the solvers as `glued_vertices`, they are one
+///   point again, so geodesics pass through such a vertex; across a non-manifold edge they pass
+///   through its end points only;
 /// - `tm` is built (`polygon_soup_to_polygon_mesh()`), points in no polygon as isolated
 ///   vertices, and its faces of 4 or more vertices are triangulated without new vertices
 ///   (`triangulate_face()`).
@@ -57,6 +58,13 @@ namespace CGAL_ext {
 ///     \cgalParamType{a model of `ReadWritePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
 ///                    as key type and a 3D point type as value type}
 ///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{glued_vertices_output}
+///     \cgalParamDescription{receives, for each point duplicated to make the surface a manifold, the
+///       `std::vector` of its vertices; pass the groups to the solvers with `glued_vertices` so
+///       that geodesics pass through these points (see the example `geodesic_distances_on_a_soup`)}
+///     \cgalParamType{an output iterator accepting `std::vector<boost::graph_traits<TriangleMesh>::%vertex_descriptor>`}
+///     \cgalParamDefault{none: the groups are not reported}
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
@@ -119,6 +127,9 @@ Geodesic_mesh_repairs polygon_soup_to_geodesic_mesh(
     vertex_of_point.push_back(vertex_of_soup_point[p]);
   face_of_polygon = internal::faces_of_input_triangles(polygons, soup, face_of_soup_polygon,
                                                        boost::graph_traits<TriangleMesh>::null_face());
+  if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::glued_vertices_output_t>::value)
+    internal::write_glued_groups(soup, vertex_of_soup_point,
+                                 parameters::get_parameter(np, internal_np::glued_vertices_output));
   return repairs;
 }
 

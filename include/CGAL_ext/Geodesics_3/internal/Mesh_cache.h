@@ -380,6 +380,8 @@ inline void Mesh_cache::remove_degenerate_faces(std::vector<std::vector<int>>& g
     }
     pending.swap(waiting);
   }
+  if(std::all_of(face_state.begin(), face_state.end(), [](std::uint8_t s) { return s & face_removed; }))
+    throw Geodesic_error("every face of the mesh is degenerate (zero area): there is no surface");
 }
 
 inline void Mesh_cache::relocate_face_point(int& f, std::array<double, 3>& b) const

@@ -43,6 +43,7 @@ struct Soup_in_repair
   std::vector<Soup_polygon> polygons;
   std::vector<std::size_t> input_polygon;  // per polygon: the input polygon it is (a loop of)
   std::vector<std::size_t> point_of_input; // per input point: its point once duplicates are merged
+  std::vector<std::pair<std::size_t, std::size_t>> copies; // (point, its copy) made by the orientation
 };
 
 template <class Id>
@@ -159,15 +160,21 @@ void remove_repeated_points(Soup_in_repair<Point>& soup, Geodesic_mesh_repairs& 
 class Orientation_counter : public CGAL::Polygon_mesh_processing::Default_orientation_visitor
 {
 public:
-  Orientation_counter(Geodesic_mesh_repairs& repairs, std::vector<bool>& reversed)
-    : m_repairs(&repairs), m_reversed(&reversed)
+  Orientation_counter(Geodesic_mesh_repairs& repairs, std::vector<bool>& reversed,
+                      std::vector<std::pair<std::size_t, std::size_t>>& copies)
+    : m_repairs(&repairs), m_reversed(&reversed), m_copies(&copies)
   {}
-  void duplicated_vertex(std::size_t, std::size_t) { ++m_repairs->duplicated_points; }
+  void duplicated_vertex(std::size_t point, std::size_t copy)
+  {
+    ++m_repairs->duplicated_points;
+    m_copies->emplace_back(point, copy);
+  }
   void polygon_orientation_reversed(std::size_t polygon) { (*m_reversed)[polygon] = !(*m_reversed)[polygon]; }
 
 private:
   Geodesic_mesh_repairs* m_repairs;
   std::vector<bool>* m_reversed;
+  std::vector<std::pair<std::size_t, std::size_t>>* m_copies;
 };
 
 /// Orients the soup consistently; where it cannot be a manifold, CGAL duplicates points (the
@@ -177,7 +184,7 @@ void orient(Soup_in_repair<Point>& soup, Geodesic_mesh_repairs& repairs)
 {
   std::vector<bool> reversed(soup.polygons.size(), false);
   CGAL::Polygon_mesh_processing::orient_polygon_soup(
-    soup.points, soup.polygons, CGAL::parameters::visitor(Orientation_counter(repairs, reversed)));
+    soup.points, soup.polygons, CGAL::parameters::visitor(Orientation_counter(repairs, reversed, soup.copies)));
   repairs.reversed_polygons = std::size_t(std::count(reversed.begin(), reversed.end(), true));
 }
 
@@ -200,6 +207,23 @@ struct Vertex_listing_point_map
     map.vertices->push_back(v);
   }
 };
+
+/// Writes, for each point the orientation duplicated, the group of its vertices (the point's and
+/// its copies') to `out`, as a `std::vector` of vertices.
+template <class Point, class VertexOfPoint, class OutputIterator>
+void write_glued_groups(const Soup_in_repair<Point>& soup, const VertexOfPoint& vertex_of_soup_point, OutputIterator out)
+{
+  std::vector<std::pair<std::size_t, std::size_t>> copies = soup.copies;
+  std::sort(copies.begin(), copies.end());
+  for(std::size_t i = 0; i < copies.size();) {
+    std::vector<typename VertexOfPoint::value_type> group{vertex_of_soup_point[copies[i].first]};
+    std::size_t j = i;
+    for(; j < copies.size() && copies[j].first == copies[i].first; ++j)
+      group.push_back(vertex_of_soup_point[copies[j].second]);
+    *out++ = group;
+    i = j;
+  }
+}
 
 /// Builds `tm` from the oriented soup; returns the vertex of each point of the soup.
 template <class Point, class TriangleMesh, class VertexPointMap>
