@@ -69,17 +69,27 @@ Face_location library_location(const Mesh_file& file, const Surface_point& s, co
                                           : "it has " + std::to_string(polygon.size()) + " vertices") +
                      ")");
   // The face may start at another corner, and run the other way if the face was reversed to
-  // orient the surface; its corners are at the polygon's points (merged and copied points have
-  // other ids), which are 3 distinct positions.
-  Face_location location(f, {{0., 0., 0.}});
+  // orient the surface. Its corners are the polygon's points' vertices, or copies of them (made
+  // at non-manifold points), found then by position.
+  std::array<Vertex_index, 3> corners;
   int k = 0;
-  for(auto h : CGAL::halfedges_around_face(file.mesh.halfedge(f), file.mesh)) {
-    const Point& corner = file.mesh.point(file.mesh.source(h));
-    for(int j = 0; j < 3; ++j)
-      if(file.soup.points[polygon[j]] == corner)
-        location.second[k] = s.barycentric[j];
-    ++k;
-  }
+  for(auto h : CGAL::halfedges_around_face(file.mesh.halfedge(f), file.mesh))
+    corners[std::size_t(k++)] = file.mesh.source(h);
+  std::array<int, 3> point_of_corner{{-1, -1, -1}};
+  std::array<bool, 3> taken{{false, false, false}};
+  for(int pass = 0; pass < 2; ++pass)
+    for(std::size_t c = 0; c < 3; ++c)
+      for(std::size_t j = 0; j < 3 && point_of_corner[c] < 0; ++j) {
+        const bool same = pass == 0 ? file.vertex_of_point[polygon[j]] == corners[c]
+                                    : file.soup.points[polygon[j]] == file.mesh.point(corners[c]);
+        if(!taken[j] && same) {
+          point_of_corner[c] = int(j);
+          taken[j] = true;
+        }
+      }
+  Face_location location(f, {{0., 0., 0.}});
+  for(std::size_t c = 0; c < 3; ++c)
+    location.second[c] = point_of_corner[c] >= 0 ? s.barycentric[std::size_t(point_of_corner[c])] : 0.;
   return location;
 }
 

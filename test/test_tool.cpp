@@ -1548,8 +1548,6 @@ const std::string P = "path '" + elephant + "'";
 const Bad_case bad_cases[] = {
   {"face_point_on_a_quad", "distances quad.off --source f:0:0.2:0.3:0.5", "d.txt",
    "error: source 'f:0:0.2:0.3:0.5': face 0 of the file is not a triangle of the surface (it has 4 vertices)"},
-  {"face_point_on_a_segment", "distances with_segment.off --source 1,f:0:0.2:0.3:0.5", "d.txt",
-   "face 0 of the file is not a triangle of the surface (its 3 vertices are not distinct points)"},
   {"nan_coordinate", "distances nan.ply --source 0", "d.ply", "error: point 2 has a non-finite coordinate (0, nan, 0)"},
   {"nan_text", "distances nan.off --source 0", "d.txt", "cannot read mesh 'nan.off'"},
   {"empty_file", "distances empty.off --source 0", "d.txt", "empty.off"},

@@ -26,7 +26,11 @@ namespace CGAL_ext {
 /// take, from a polygon soup, and tells which vertex each input point became. Every step keeps
 /// the surface, and so the geodesic distances, exactly (CGAL's Polygon_mesh_processing does
 /// each one):
-/// - points at identical coordinates are merged into one vertex (`merge_duplicate_points_in_polygon_soup()`);
+/// - in a soup (no point shared by two polygons, as in an STL file or a mesh saved face by face),
+///   points at identical coordinates are merged into one vertex
+///   (`merge_duplicate_points_in_polygon_soup()`); a mesh whose polygons share their points
+///   keeps them as they are (two vertices at one place may be the two sides of a cut), unless
+///   `merge_duplicate_points(true)` is given;
 /// - repeated consecutive points of a polygon are dropped, a polygon passing twice through a
 ///   point is cut there into loops, and what has fewer than 3 points is removed (segments and
 ///   points have no area);
@@ -58,6 +62,11 @@ namespace CGAL_ext {
 ///     \cgalParamType{a model of `ReadWritePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
 ///                    as key type and a 3D point type as value type}
 ///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{merge_duplicate_points}
+///     \cgalParamDescription{whether points at identical coordinates become one vertex}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`true` when no point is shared by two polygons (a soup), `false` otherwise}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{glued_vertices_output}
 ///     \cgalParamDescription{receives, for each point duplicated to make the surface a manifold, the
@@ -113,7 +122,13 @@ Geodesic_mesh_repairs polygon_soup_to_geodesic_mesh(
 
   Geodesic_mesh_repairs repairs;
   internal::Soup_in_repair<Point> soup = internal::checked_soup<Point>(points, polygons);
-  internal::merge_duplicate_points(soup, repairs);
+  bool merge = internal::shares_no_point(soup);
+  if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::merge_duplicate_points_t>::value)
+    merge = parameters::get_parameter(np, internal_np::merge_duplicate_points);
+  if(merge)
+    internal::merge_duplicate_points(soup, repairs);
+  else
+    internal::keep_points(soup);
   internal::remove_repeated_points(soup, repairs);
   internal::orient(soup, repairs);
   repairs.isolated_points = internal::count_isolated_points(soup);

@@ -22,6 +22,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <numeric>
 #include <sstream>
 #include <string>
@@ -90,6 +91,29 @@ Soup_in_repair<Point> checked_soup(const PointRange& points, const PolygonRange&
   soup.input_polygon.resize(soup.polygons.size());
   std::iota(soup.input_polygon.begin(), soup.input_polygon.end(), std::size_t(0));
   return soup;
+}
+
+/// Whether no point is shared by two polygons: a soup, whose polygons meet only where their
+/// points coincide.
+template <class Point>
+bool shares_no_point(const Soup_in_repair<Point>& soup)
+{
+  std::vector<std::uint8_t> used(soup.points.size(), 0);
+  for(const Soup_polygon& polygon : soup.polygons)
+    for(std::size_t p : polygon) {
+      if(used[p])
+        return false;
+      used[p] = 1;
+    }
+  return true;
+}
+
+/// Keeps every point as it is.
+template <class Point>
+void keep_points(Soup_in_repair<Point>& soup)
+{
+  soup.point_of_input.resize(soup.points.size());
+  std::iota(soup.point_of_input.begin(), soup.point_of_input.end(), std::size_t(0));
 }
 
 /// Merges the points at identical coordinates and records where each input point went.

@@ -9,3 +9,4 @@ CGAL_ext_add_named_parameter(number_of_threads_t, number_of_threads, number_of_t
 CGAL_ext_add_named_parameter(batch_size_t, batch_size, batch_size)
 CGAL_ext_add_named_parameter(glued_vertices_t, glued_vertices, glued_vertices)
 CGAL_ext_add_named_parameter(glued_vertices_output_t, glued_vertices_output, glued_vertices_output)
+CGAL_ext_add_named_parameter(merge_duplicate_points_t, merge_duplicate_points, merge_duplicate_points)
