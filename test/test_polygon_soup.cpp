@@ -272,6 +272,40 @@ TEST(Polygon_soup_to_geodesic_mesh, three_triangles_on_one_edge)
   }
 }
 
+// The bound across a non-manifold edge: three unit squares (pages) hinged on one edge (the
+// spine). CGAL cuts the pages apart along the spine where it cannot keep them together; the
+// solvers glue the spine's end points only, so a page reached across the cut is reached through
+// an end of the spine: the distance is the shorter way through an end, never below the true
+// geodesic (the pages unfolded into one plane) and above it by at most the spine's length.
+TEST(Polygon_soup_to_geodesic_mesh, across_a_non_manifold_edge_through_its_ends)
+{
+  const double pi = 3.14159265358979323846;
+  std::vector<Point> points = {Point(0, 0, 0), Point(0, 0, 1)}; // the spine
+  Polygons polygons;
+  for(int page = 0; page < 3; ++page) {
+    const double a = 2 * pi * page / 3;
+    const std::size_t bottom = points.size(), top = bottom + 1;
+    points.emplace_back(std::cos(a), std::sin(a), 0.);
+    points.emplace_back(std::cos(a), std::sin(a), 1.);
+    polygons.push_back({0, bottom, top});
+    polygons.push_back({0, top, 1});
+  }
+  const Prepared p = prepare(points, polygons);
+  expect_prepared(p, points, polygons);
+  EXPECT_GT(p.glued.size(), 0u);
+  const std::vector<double> d = point_distances(p, 2); // the bottom outer corner of page 0
+  int through_the_ends = 0;
+  for(std::size_t target : {5, 7}) { // the top outer corners of pages 1 and 2
+    const double unfolded = std::sqrt(2. * 2. + 1.);           // straight across the spine
+    const double via_ends = 1. + std::sqrt(2.);                 // through a spine end
+    EXPECT_GE(d[target], unfolded - 1e-14) << "point " << target;
+    EXPECT_LE(d[target], via_ends + 1e-14) << "point " << target;
+    EXPECT_LE(d[target] - unfolded, 1. + 1e-14) << "at most the spine's length more";
+    through_the_ends += std::abs(d[target] - via_ends) < 1e-14;
+  }
+  EXPECT_GE(through_the_ends, 1) << "a page cut off along the spine is reached through its ends";
+}
+
 TEST(Polygon_soup_to_geodesic_mesh, polygons_are_reversed_to_orient_the_surface)
 {
   const Polygons polygons = {{0, 1, 2}, {0, 3, 2}};

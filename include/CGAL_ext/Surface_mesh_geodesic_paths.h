@@ -123,10 +123,20 @@ public:
   ///     \cgalParamType{a model of `ReadablePropertyMap` with an integer value type}
   ///     \cgalParamDefault{an automatically indexed internal map}
   ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{glued_vertices}
+  ///     \cgalParamDescription{groups of vertices that are one point of the surface (the copies of a point that
+  ///                           `polygon_soup_to_geodesic_mesh()` duplicated at a non-manifold vertex or edge): a
+  ///                           path reaching one goes on from all of them. Vertices whose faces form several fans
+  ///                           need no gluing: they are split and glued inside}
+  ///     \cgalParamType{a range of ranges of `boost::graph_traits<TriangleMesh>::%vertex_descriptor`}
+  ///     \cgalParamDefault{none: vertices at one place stay apart (the two sides of a cut)}
+  ///   \cgalParamNEnd
   /// \cgalNamedParamsEnd
   ///
-  /// \throws Geodesic_error when `tm` is empty, not a manifold triangle mesh, has a non-finite
-  ///         coordinate or a degenerate triangle
+  /// Non-manifold vertices and degenerate (zero-area) triangles are taken (see the manual).
+  ///
+  /// \throws Geodesic_error when `tm` is empty, has a face that is not a triangle, a non-finite
+  ///         coordinate, a glued vertex out of range, or only degenerate triangles
   template <class NamedParameters = parameters::Default_named_parameters_type>
   explicit Surface_mesh_geodesic_paths(const TriangleMesh& tm, const NamedParameters& np = parameters::default_values())
     : m_mesh(tm, np)

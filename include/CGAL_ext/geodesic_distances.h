@@ -92,6 +92,14 @@ namespace CGAL_ext {
 ///     \cgalParamType{a range of `boost::graph_traits<TriangleMesh>::%vertex_descriptor`}
 ///     \cgalParamDefault{none: every vertex is settled}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{glued_vertices}
+///     \cgalParamDescription{groups of vertices that are one point of the surface (the copies of a point that
+///                           `polygon_soup_to_geodesic_mesh()` duplicated at a non-manifold vertex or edge): a
+///                           path reaching one goes on from all of them. Vertices whose faces form several fans
+///                           need no gluing: they are split and glued inside}
+///     \cgalParamType{a range of ranges of `boost::graph_traits<TriangleMesh>::%vertex_descriptor`}
+///     \cgalParamDefault{none: vertices at one place stay apart (the two sides of a cut)}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{statistics}
 ///     \cgalParamDescription{receives windows created, peak live windows and seconds}
 ///     \cgalParamType{`CGAL_ext::Geodesic_statistics&`}
@@ -113,8 +121,12 @@ namespace CGAL_ext {
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
-/// \throws Geodesic_error when `tm` is empty, not a manifold triangle mesh, has a non-finite
-///         coordinate or a degenerate triangle, when a source or stop vertex is out of range,
+/// Non-manifold vertices, degenerate (zero-area) triangles, isolated vertices (+infinity) and
+/// coordinates of any scale are taken.
+///
+/// \throws Geodesic_error when `tm` is empty, has a face that is not a triangle, a non-finite
+///         coordinate or only degenerate triangles, when a source, stop or glued vertex is out of
+///         range, when every source is an isolated vertex,
 ///         when barycentric coordinates are not a convex combination, or when `max_distance` is
 ///         negative, `approximation` not positive, `number_of_threads` negative or `batch_size` zero.
 template <class ConcurrencyTag = CGAL::Sequential_tag, class TriangleMesh, class VertexDistanceMap,

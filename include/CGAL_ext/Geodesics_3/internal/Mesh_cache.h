@@ -148,7 +148,7 @@ struct Mesh_cache
 private:
   void remove_degenerate_faces(std::vector<std::vector<int>>& glued_groups);
   void split_face_at(int y, int c);
-  void compute_frames();
+  bool compute_frames(); // false if a face is degenerate
   void split_non_manifold_vertices(const std::vector<std::int32_t>& corner_count);
   void glue_vertices(const std::vector<std::vector<int>>& groups);
   void compute_vertex_flags();
@@ -159,9 +159,12 @@ inline void Mesh_cache::finish(const std::vector<std::vector<int>>& glued_groups
   number_of_mesh_vertices = position.size();
   number_of_mesh_faces = number_of_faces;
   std::vector<std::vector<int>> groups = glued_groups;
-  remove_degenerate_faces(groups);
-  number_of_faces = corner_vertex.size() / 3;
-  compute_frames();
+  // a clean mesh computes its frames once; degenerate faces are removed, and the frames redone
+  if(!compute_frames()) {
+    remove_degenerate_faces(groups);
+    number_of_faces = corner_vertex.size() / 3;
+    compute_frames();
+  }
   // One outgoing half-edge per vertex, a border one when there is one, so that turning around
   // the vertex from it meets every face of its fan.
   first_outgoing.assign(position.size(), -1);
@@ -180,8 +183,9 @@ inline void Mesh_cache::finish(const std::vector<std::vector<int>>& glued_groups
   compute_vertex_flags();
 }
 
-inline void Mesh_cache::compute_frames()
+inline bool Mesh_cache::compute_frames()
 {
+  bool none_degenerate = true;
   const std::size_t nh = corner_vertex.size();
   frame.resize(nh);
   corner_angle.resize(nh);
@@ -216,12 +220,16 @@ inline void Mesh_cache::compute_frames()
     }
     const double a = frame[3 * f].length, b = frame[3 * f + 1].length, c = frame[3 * f + 2].length;
     const double area = 0.5 * a * frame[3 * f].apex_y;
+    const double longest = std::max({a, b, c});
+    if(!(std::min({a, b, c}) > 0) || !(2 * area > degenerate_height_ratio * longest * longest))
+      none_degenerate = false;
     anisotropy_sum += 0.5 * (a + b + c) * std::max({a, b, c}) / (2 * std::sqrt(3.) * area);
   }
   mean_edge_length = edge_count ? length_sum / double(edge_count) : 0.;
   const std::size_t live_faces = number_of_faces - std::size_t(std::count_if(face_state.begin(), face_state.end(),
                                                                            [](std::uint8_t s) { return s & face_removed; }));
   mean_anisotropy = live_faces ? anisotropy_sum / double(live_faces) : 1.;
+  return none_degenerate;
 }
 
 namespace mesh_geometry {
