@@ -33,6 +33,7 @@ void write_input_stats(std::ostream& s, const Solver_choice& choice, const Mesh_
     << "triangulated_polygons=" << repairs.triangulated_polygons << "\n"
     << "reversed_polygons=" << repairs.reversed_polygons << "\n"
     << "duplicated_points=" << repairs.duplicated_points << "\n"
+    << "non_manifold_edges=" << repairs.non_manifold_edges << "\n"
     << "isolated_points=" << repairs.isolated_points << "\n"
     << "sources=" << sources << "\n"
     << "seconds_read=" << seconds_read << "\n";

@@ -262,6 +262,11 @@ TEST(Polygon_soup_to_geodesic_mesh, three_triangles_on_one_edge)
   const Prepared p = prepare(points, polygons);
   expect_prepared(p, points, polygons);
   EXPECT_GT(p.repairs.duplicated_points, 0u);
+  EXPECT_EQ(p.repairs.non_manifold_edges, 1u);
+  EXPECT_NE(p.repairs.summary().find("1 edge is shared by 3 or more polygons (paths cross such an edge only at its end "
+                                     "points)"),
+            std::string::npos)
+    << p.repairs.summary();
   EXPECT_EQ(p.mesh.number_of_faces(), 3u);
   for(std::size_t j = 0; j < polygons.size(); ++j)
     EXPECT_NE(p.face_of_polygon[j], Mesh::null_face()) << "polygon " << j;

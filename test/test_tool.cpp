@@ -996,7 +996,7 @@ const std::vector<std::string> mmp_keys = {"windows_propagated", "windows_stored
 
 /// The keys of what was repaired to make the file a mesh (all 0 for a clean file).
 const std::vector<std::string> repair_keys = {"merged_points",     "removed_polygons",  "split_polygons",
-                                              "triangulated_polygons", "reversed_polygons", "duplicated_points",
+                                              "triangulated_polygons", "reversed_polygons", "duplicated_points", "non_manifold_edges",
                                               "isolated_points"};
 
 /// Expects every key of `repair_keys` to be 0 in the --stats output parsed as `kv`.
@@ -1472,7 +1472,8 @@ TEST_F(Tool, a_non_manifold_edge_and_an_isolated_point)
   const std::vector<double> d =
     repaired_distances("distances edge3.off --source 0",
                        "duplicated 4 points at non-manifold vertices or edges (glued again: geodesics pass "
-                       "through them), 1 point is in no face (at infinite distance)");
+                       "through them), 1 edge is shared by 3 or more polygons (paths cross such an edge only "
+                       "at its end points), 1 point is in no face (at infinite distance)");
   expect_same_distances(d, {0., 1., 1., 1., 1., infinity}, 1e-15);
 }
 

@@ -30,6 +30,9 @@ struct Geodesic_mesh_repairs
   /// (non-manifold vertices and edges, orientation conflicts); the solvers glue copies at one
   /// position together again, so that geodesics pass through them
   std::size_t duplicated_points = 0;
+  /// edges shared by 3 or more polygons: cut apart, their end points glued, so that paths cross
+  /// such an edge only at its end points (a distance across it is at most its length too long)
+  std::size_t non_manifold_edges = 0;
   /// points in no face: isolated vertices of the mesh, at distance `+infinity` from any other source
   std::size_t isolated_points = 0;
 
@@ -59,6 +62,8 @@ struct Geodesic_mesh_repairs
     add(reversed_polygons, "reversed ", "polygon", "polygons", " to orient the surface");
     add(duplicated_points, "duplicated ", "point", "points",
         " at non-manifold vertices or edges (glued again: geodesics pass through them)");
+    add(non_manifold_edges, "", "edge is", "edges are",
+        " shared by 3 or more polygons (paths cross such an edge only at its end points)");
     add(isolated_points, "", "point is", "points are", " in no face (at infinite distance)");
     return text;
   }

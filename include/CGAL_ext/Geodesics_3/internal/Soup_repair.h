@@ -24,6 +24,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <numeric>
+#include <set>
 #include <sstream>
 #include <string>
 #include <type_traits>
@@ -185,9 +186,12 @@ class Orientation_counter : public CGAL::Polygon_mesh_processing::Default_orient
 {
 public:
   Orientation_counter(Geodesic_mesh_repairs& repairs, std::vector<bool>& reversed,
-                      std::vector<std::pair<std::size_t, std::size_t>>& copies)
-    : m_repairs(&repairs), m_reversed(&reversed), m_copies(&copies)
+                      std::vector<std::pair<std::size_t, std::size_t>>& copies,
+                      std::set<std::pair<std::size_t, std::size_t>>& non_manifold_edges)
+    : m_repairs(&repairs), m_reversed(&reversed), m_copies(&copies), m_non_manifold_edges(&non_manifold_edges)
   {}
+  // called for each polygon side on such an edge
+  void non_manifold_edge(std::size_t a, std::size_t b, std::size_t) { m_non_manifold_edges->insert(std::minmax(a, b)); }
   void duplicated_vertex(std::size_t point, std::size_t copy)
   {
     ++m_repairs->duplicated_points;
@@ -199,6 +203,7 @@ private:
   Geodesic_mesh_repairs* m_repairs;
   std::vector<bool>* m_reversed;
   std::vector<std::pair<std::size_t, std::size_t>>* m_copies;
+  std::set<std::pair<std::size_t, std::size_t>>* m_non_manifold_edges;
 };
 
 /// Orients the soup consistently; where it cannot be a manifold, CGAL duplicates points (the
@@ -207,8 +212,11 @@ template <class Point>
 void orient(Soup_in_repair<Point>& soup, Geodesic_mesh_repairs& repairs)
 {
   std::vector<bool> reversed(soup.polygons.size(), false);
+  std::set<std::pair<std::size_t, std::size_t>> non_manifold_edges;
   CGAL::Polygon_mesh_processing::orient_polygon_soup(
-    soup.points, soup.polygons, CGAL::parameters::visitor(Orientation_counter(repairs, reversed, soup.copies)));
+    soup.points, soup.polygons,
+    CGAL::parameters::visitor(Orientation_counter(repairs, reversed, soup.copies, non_manifold_edges)));
+  repairs.non_manifold_edges = non_manifold_edges.size();
   repairs.reversed_polygons = std::size_t(std::count(reversed.begin(), reversed.end(), true));
 }
 
