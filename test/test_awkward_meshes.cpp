@@ -169,6 +169,10 @@ TEST(NonManifoldVertex, GluedVertexOutOfRangeIsAnError)
   const std::vector<std::vector<Vertex>> glued{{Vertex(0), Vertex(99)}};
   EXPECT_TRUE(throws_geodesic_error([&] { solve(m, Vertex(0), params::glued_vertices(glued)); },
                                     {"glued vertex", "99", "out of range"}));
+  // a wormhole is no surface
+  const std::vector<std::vector<Vertex>> apart{{Vertex(0), Vertex(15)}};
+  EXPECT_TRUE(throws_geodesic_error([&] { solve(m, Vertex(0), params::glued_vertices(apart)); },
+                                    {"glued vertices 0 and 15 are", "apart", "one point"}));
 }
 
 // Distances scale with the mesh: at 1e-300, 1e300, or 1e6 away from the origin, the distances

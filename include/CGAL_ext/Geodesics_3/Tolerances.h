@@ -18,6 +18,9 @@ constexpr double barycentric_snap = 1e-12;
 /// A triangle whose height is below this fraction of its longest side is degenerate: it cannot
 /// be unfolded reliably.
 constexpr double degenerate_height_ratio = 1e-12;
+/// Vertices the caller glues into one point must be within this fraction of the mean edge
+/// length of each other.
+constexpr double glued_distance_ratio = 1e-9;
 /// A vertex whose angle sum exceeds 2 pi minus this (radians) is a pseudo-source: a saddle
 /// excess of round-off still leaves a shadow no window covers.
 constexpr double saddle_angle_tolerance = 1e-6;

@@ -151,6 +151,7 @@ private:
   bool compute_frames(); // false if a face is degenerate
   void split_non_manifold_vertices(const std::vector<std::int32_t>& corner_count);
   void glue_vertices(const std::vector<std::vector<int>>& groups);
+  void check_glued_groups(const std::vector<std::vector<int>>& groups) const;
   void compute_vertex_flags();
 };
 
@@ -160,7 +161,9 @@ inline void Mesh_cache::finish(const std::vector<std::vector<int>>& glued_groups
   number_of_mesh_faces = number_of_faces;
   std::vector<std::vector<int>> groups = glued_groups;
   // a clean mesh computes its frames once; degenerate faces are removed, and the frames redone
-  if(!compute_frames()) {
+  const bool none_degenerate = compute_frames();
+  check_glued_groups(glued_groups);
+  if(!none_degenerate) {
     remove_degenerate_faces(groups);
     number_of_faces = corner_vertex.size() / 3;
     compute_frames();
@@ -490,6 +493,21 @@ inline void Mesh_cache::split_non_manifold_vertices(const std::vector<std::int32
     first_outgoing.push_back(start);
     for_each_outgoing(copy, [&](int h) { corner_vertex[std::size_t(h)] = copy; });
   }
+}
+
+// The caller's groups must be points: a wormhole between two places is not a surface.
+inline void Mesh_cache::check_glued_groups(const std::vector<std::vector<int>>& groups) const
+{
+  for(const std::vector<int>& group : groups)
+    for(std::size_t i = 1; i < group.size(); ++i) {
+      const double apart = mesh_geometry::distance(position[std::size_t(group[i])], position[std::size_t(group[0])]);
+      if(apart > glued_distance_ratio * mean_edge_length) {
+        std::ostringstream msg;
+        msg << "glued vertices " << group[0] << " and " << group[i] << " are " << apart * unit
+            << " apart: only vertices at one point of the surface can be glued";
+        throw Geodesic_error(msg.str());
+      }
+    }
 }
 
 // Each copy made by `split_non_manifold_vertices` is glued to its vertex, and the vertices of
