@@ -280,6 +280,25 @@ TEST(DegenerateTriangles, FaceShrunkToAPointOnAGrid)
   expect_euclidean(m, "a face shrunk to a point");
 }
 
+// Flat triangles stacked on one segment of the x-axis, between two real triangles below it and
+// two above (the points and faces of CGAL's degtri_sliding.off): the caps face each other, and
+// each is split at the other's middle vertex until none is left. The surface is the plane: a
+// vertex is reached straight, or around the corner at vertex 3 (2, 0) where the lower triangles
+// end.
+TEST(DegenerateTriangles, FlatTrianglesStackedOnOneSegment)
+{
+  const Mesh m = mesh_from_soup({Point(4, -2, 0), Point(6, 0, 0), Point(4, 0, 0), Point(2, 0, 0), Point(1, 0, 0),
+                                 Point(3, 0, 0), Point(5, 0, 0), Point(3, 2, 0)},
+                                {{0, 1, 2}, {0, 2, 3}, {3, 2, 4}, {2, 1, 6}, {2, 6, 4}, {4, 6, 5}, {5, 6, 7}, {4, 5, 7}});
+  const double r8 = std::sqrt(8.), r5 = std::sqrt(5.);
+  const std::vector<double> exact{0, r8, 2, r8, r8 + 1, r5, r5, std::sqrt(17.)};
+  for(const auto& [name, d] : solve_all(m, {Vertex(0)}, params::default_values()))
+    EXPECT_TRUE(agrees(d, exact, bbox_diagonal(m), 1e-14, "stacked flat triangles " + name));
+  // and from the top: vertex 7 reaches the bottom straight through the axis
+  const std::vector<double> from_top = solve(m, Vertex(7));
+  EXPECT_NEAR(from_top[0], std::sqrt(17.), 1e-14);
+}
+
 // In a real mesh: an edge (a, b) cut at its midpoint m. The reference splits both faces on the
 // edge at m; the degenerate version keeps one of them whole and closes the gap with the
 // zero-area cap (b, m, a). Same surface, same vertices: same distances, and a point of the face

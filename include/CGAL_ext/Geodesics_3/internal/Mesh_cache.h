@@ -334,7 +334,7 @@ inline void Mesh_cache::remove_degenerate_faces(std::vector<std::vector<int>>& g
       opposite_halfedge[std::size_t(h)] = -1;
     }
   };
-  // a face beyond a cap's long edge may be degenerate itself: such caps wait for it
+  std::size_t splits = 0;
   while(!pending.empty()) {
     std::vector<int> waiting;
     bool progressed = false;
@@ -363,11 +363,11 @@ inline void Mesh_cache::remove_degenerate_faces(std::vector<std::vector<int>>& g
         progressed = true;
         continue;
       }
+      // the face beyond may be degenerate too (flat faces stacked on one segment): its halves
+      // are, and are split in turn, each time at a vertex strictly inside, so this ends
       const int y = opposite_halfedge[std::size_t(longest)];
-      if(y >= 0 && (face_state[std::size_t(face(y))] & face_removed) == 0 && is_degenerate_face(face(y))) {
-        waiting.push_back(f);
-        continue;
-      }
+      if(++splits > 16 * number_of_mesh_faces + 64)
+        break;
       const int c = corner_vertex[std::size_t(from_middle)];
       const int o_to = opposite_halfedge[std::size_t(to_middle)], o_from = opposite_halfedge[std::size_t(from_middle)];
       remove(f);
@@ -384,9 +384,10 @@ inline void Mesh_cache::remove_degenerate_faces(std::vector<std::vector<int>>& g
             waiting.push_back(g);
       }
     }
-    if(!progressed) {
+    if(!progressed || splits > 16 * number_of_mesh_faces + 64) {
       std::ostringstream msg;
-      msg << "degenerate (zero-area) triangles that cannot be resolved: face " << mesh_face(waiting.front());
+      msg << "degenerate (zero-area) triangles that cannot be resolved: face "
+          << mesh_face(waiting.empty() ? pending.front() : waiting.front());
       throw Geodesic_error(msg.str());
     }
     pending.swap(waiting);
