@@ -1,11 +1,13 @@
 // Parallel (PVTP) and approximate (AVTP, PAVTP) propagation: the same distances for every
-// thread count and batch size, exactness of PVTP, the limits and bounds of the approximation.
+// thread count and batch size, exactness of PVTP, the limits and bounds of the approximation;
+// distance matrices, solved in parallel across sources.
 // This file is also built under ThreadSanitizer (test_parallel_tsan).
 #include "support/checks.h"
 #include "support/path_checks.h"
 #include "support/solve.h"
 
 #include <CGAL_ext/Surface_mesh_geodesic_paths.h>
+#include <CGAL_ext/geodesic_distance_matrix.h>
 #include <CGAL_ext/Geodesics_3/internal/Parallel_for.h>
 
 #include <tbb/task_arena.h>
@@ -487,6 +489,66 @@ TEST(Parallel_for, sequential_solvers_run_inside_a_callers_parallel_loop)
     EXPECT_EQ(exact_runs[i], exact) << "run " << i;
     EXPECT_EQ(approximate_runs[i], approximate) << "run " << i;
   }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Distance matrices: one row per source, solved in parallel across sources
+
+TEST(Distance_matrix, rows_are_single_source_solves_in_order_for_every_thread_count)
+{
+  const Mesh& m = test_mesh("elephant");
+  const std::vector<Vertex> sources = spread_vertices(m, 9);
+  std::vector<std::vector<double>> expected;
+  for(Vertex s : sources)
+    expected.push_back(solve(m, s));
+  auto check = [&](const std::string& label, auto solve_rows) {
+    std::size_t next = 0;
+    solve_rows([&](std::size_t i, const std::vector<double>& row) {
+      EXPECT_EQ(i, next++) << label << ": rows come in the order of the sources";
+      EXPECT_EQ(row, expected[i]) << label << ": row " << i;
+    });
+    EXPECT_EQ(next, sources.size()) << label;
+  };
+  check("sequential", [&](auto f) { CGAL_ext::geodesic_distance_rows(m, sources, f); });
+  for(int threads : {1, 2, 4})
+    check("T=" + std::to_string(threads), [&](auto f) {
+      CGAL_ext::geodesic_distance_rows<CGAL::Parallel_tag>(m, sources, f, number_of_threads(threads));
+    });
+}
+
+TEST(Distance_matrix, square_matrix_is_symmetric_and_a_local_one_is_cut_at_the_radius)
+{
+  const Mesh& m = test_mesh("elephant");
+  const std::vector<Vertex> sources = spread_vertices(m, 12);
+  const std::size_t n = m.number_of_vertices();
+  const std::vector<double> full = CGAL_ext::geodesic_distance_matrix<CGAL::Parallel_tag>(m, sources, number_of_threads(2));
+  ASSERT_EQ(full.size(), sources.size() * n);
+  const double diag = bbox_diagonal(m);
+  for(std::size_t i = 0; i < sources.size(); ++i) {
+    EXPECT_EQ(full[i * n + sources[i].idx()], 0.);
+    for(std::size_t j = 0; j < i; ++j)
+      EXPECT_NEAR(full[i * n + sources[j].idx()], full[j * n + sources[i].idx()], 1e-12 * diag) << i << ", " << j;
+  }
+  // within a radius: the same entries, +infinity beyond
+  const double radius = 0.1 * diag;
+  const std::vector<double> local = CGAL_ext::geodesic_distance_matrix<CGAL::Parallel_tag>(
+    m, sources, number_of_threads(2).max_distance(radius));
+  for(std::size_t k = 0; k < full.size(); ++k)
+    EXPECT_EQ(local[k], full[k] <= radius ? full[k] : inf) << "entry " << k;
+}
+
+TEST(Distance_matrix, face_point_sources_and_errors)
+{
+  const Mesh& m = test_mesh("elephant");
+  const std::vector<Face_location> points{location(10, 0.2, 0.3), location(500, 0.6, 0.1)};
+  const std::vector<double> matrix = CGAL_ext::geodesic_distance_matrix(m, points);
+  const std::vector<double> second(matrix.begin() + std::ptrdiff_t(m.number_of_vertices()), matrix.end());
+  EXPECT_EQ(second, solve(m, std::vector<Face_location>{points[1]}));
+  EXPECT_TRUE(throws_geodesic_error([&] { CGAL_ext::geodesic_distance_matrix(m, std::vector<Vertex>{}); },
+                                    {"no source"}));
+  EXPECT_TRUE(throws_geodesic_error(
+    [&] { CGAL_ext::geodesic_distance_matrix(m, std::vector<Vertex>{Vertex(0)}, CGAL_ext::parameters::algorithm(CGAL_ext::MMP)); },
+    {"VTP"}));
 }
 
 } // namespace

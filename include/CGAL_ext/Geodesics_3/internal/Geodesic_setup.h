@@ -200,10 +200,10 @@ private:
 template <class TriangleMesh, class NamedParameters>
 using Vertex_point_map_of = typename CGAL::GetVertexPointMap<TriangleMesh, NamedParameters>::const_type;
 
-/// Runs a solver, in a task arena of `threads` threads (0: TBB's choice) when parallel: the
-/// arena bounds the threads of this call only, never a process-wide setting.
-template <bool parallel, class Solver>
-void run_solver(Solver& solver, int threads)
+/// Calls `f()` in a task arena of `threads` threads (0: TBB's choice) when parallel, here
+/// otherwise: the arena bounds the threads of this call only, never a process-wide setting.
+template <bool parallel, class Function>
+void run_in_arena(int threads, const Function& f)
 {
 #ifdef CGAL_LINKED_WITH_TBB
   if constexpr(parallel) {
@@ -215,13 +215,20 @@ void run_solver(Solver& solver, int threads)
     arena.execute([&] {
       sanitizer_acquire(&start);
       const Sanitizer_on_exit end(sanitizer_release, &done);
-      solver.run();
+      f();
     });
     return;
   }
 #endif
   (void)threads;
-  solver.run();
+  f();
+}
+
+/// Runs a solver, on `threads` threads when parallel (see `run_in_arena`).
+template <bool parallel, class Solver>
+void run_solver(Solver& solver, int threads)
+{
+  run_in_arena<parallel>(threads, [&solver] { solver.run(); });
 }
 
 /// What a solver did, with the seconds of the set-up; also given to the caller when it asked
