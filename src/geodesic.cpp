@@ -6,6 +6,8 @@
 //                      [--output FILE.txt|FILE.ply] [--stats]
 //   geodesic path MESH --source S[,S...] --target T [--algorithm fwp-mmp|mmp|pmmp] [--threads N]
 //                 [--batch-size K] [--max-distance D] [--output FILE.txt|FILE.obj|FILE.ply] [--stats]
+//   geodesic matrix MESH (--source S[,S...] | --all) [--target T[,T...]|sources] [--max-distance D]
+//                   [--threads N] --output FILE.npy|FILE.mtx|FILE.txt [--stats]
 //
 // MESH is an OFF, OBJ, PLY or STL file: triangles, quads, polygons, soups and non-manifold meshes
 // are made into the triangle mesh the library takes (CGAL_ext::polygon_soup_to_geodesic_mesh),
@@ -20,6 +22,7 @@
 // This file runs the subcommands; their parts are in the tool_*.h files beside it: the options
 // and their checking, reading the mesh, calling the library, writing the output, --stats.
 
+#include "tool_matrix.h"
 #include "tool_mesh.h"
 #include "tool_options.h"
 #include "tool_output.h"
@@ -157,6 +160,8 @@ int main(int argc, char** argv)
   add_distances_command(app, distances);
   Path_options path;
   add_path_command(app, path);
+  Matrix_options matrix;
+  add_matrix_command(app, matrix);
 
   try {
     app.parse(argc, argv);
@@ -178,6 +183,8 @@ int main(int argc, char** argv)
       return run_distances(distances);
     if(app.got_subcommand("path"))
       return run_path(path);
+    if(app.got_subcommand("matrix"))
+      return run_matrix(matrix);
   } catch(const std::exception& e) { // Tool_error, and the library's Geodesic_error
     std::cerr << "error: " << e.what() << std::endl;
   }

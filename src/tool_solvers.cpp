@@ -7,6 +7,7 @@
 #include "tool_text.h"
 
 #include <CGAL_ext/Surface_mesh_geodesic_paths.h>
+#include <CGAL_ext/geodesic_distance_matrix.h>
 #include <CGAL_ext/geodesic_distances.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
@@ -244,6 +245,36 @@ Path_result trace_path(const Mesh_file& file, const std::vector<Surface_point>& 
 {
   return choice.algorithm->parallel ? trace_path_with<Parallel_tag>(file, sources, target, choice)
                                     : trace_path_with<CGAL::Sequential_tag>(file, sources, target, choice);
+}
+
+void compute_distance_rows(const Mesh_file& file, const std::vector<Surface_point>& sources, double max_distance,
+                           int threads, const std::function<void(std::size_t, const std::vector<double>&)>& row)
+{
+  check_a_source_is_on_a_face(file, sources);
+  std::vector<double> in_file_order(file.vertex_of_point.size());
+  const auto to_file_order = [&](std::size_t i, const std::vector<double>& by_vertex) {
+    for(std::size_t p = 0; p < in_file_order.size(); ++p)
+      in_file_order[p] = by_vertex[file.vertex_of_point[p].idx()];
+    row(i, in_file_order);
+  };
+  const auto np = CGAL_ext::parameters::glued_vertices(file.glued_vertices)
+                    .max_distance(max_distance)
+                    .number_of_threads(threads);
+  const Thread_allowance allowance(threads);
+  // The library takes a range of one kind of source: vertices, or face locations.
+  const bool only_vertices =
+    std::all_of(sources.begin(), sources.end(), [](const Surface_point& s) { return bool(s.vertex); });
+  if(only_vertices) {
+    std::vector<Vertex_index> vertices;
+    for(const Surface_point& s : sources)
+      vertices.push_back(mesh_vertex(file, s));
+    CGAL_ext::geodesic_distance_rows<Parallel_tag>(file.mesh, vertices, to_file_order, np);
+  } else {
+    std::vector<Face_location> locations;
+    for(const Surface_point& s : sources)
+      locations.push_back(s.vertex ? vertex_location(file, s) : library_location(file, s, "source"));
+    CGAL_ext::geodesic_distance_rows<Parallel_tag>(file.mesh, locations, to_file_order, np);
+  }
 }
 
 } // namespace geodesic_tool

@@ -11,6 +11,7 @@
 #include <CGAL_ext/Geodesics_3/Geodesic_statistics.h>
 
 #include <cstddef>
+#include <functional>
 #include <limits>
 #include <vector>
 
@@ -40,6 +41,12 @@ struct Path_result
 /// throws Tool_error if no source reaches the target, or for a face point as compute_distances().
 Path_result trace_path(const Mesh_file& file, const std::vector<Surface_point>& sources,
                        const Surface_point& target, const Solver_choice& choice);
+
+/// The distances from each source alone to every point of the file (file order), one row per
+/// source handed to `row` in the order of `sources`; the sources are solved in parallel on
+/// `threads` threads (0: all cores).
+void compute_distance_rows(const Mesh_file& file, const std::vector<Surface_point>& sources, double max_distance,
+                           int threads, const std::function<void(std::size_t, const std::vector<double>&)>& row);
 
 } // namespace geodesic_tool
 

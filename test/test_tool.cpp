@@ -1708,4 +1708,106 @@ TEST_F(Tool, a_good_triangle_works)
   EXPECT_NEAR(d[2], std::sqrt(0.5), 1e-15);
 }
 
+// ---------------------------------------------------------------------------------------------
+// geodesic matrix
+
+/// The numbers of a text matrix, row by row.
+std::vector<std::vector<double>> parse_rows(const std::string& text)
+{
+  std::vector<std::vector<double>> rows;
+  for(const std::string& line : lines_of(text)) {
+    std::istringstream in(line);
+    rows.emplace_back();
+    std::string word;
+    while(in >> word)
+      rows.back().push_back(std::strtod(word.c_str(), nullptr));
+  }
+  return rows;
+}
+
+TEST_F(Tool, matrix_rows_are_the_distances_of_each_source)
+{
+  const std::string args = "matrix '" + elephant + "' --source 0,10,f:5:0.2:0.3:0.5 --threads 2";
+  const auto rows = parse_rows(output_of(args, "m.txt"));
+  ASSERT_EQ(rows.size(), 3u);
+  EXPECT_EQ(rows[0], distances("distances '" + elephant + "' --source 0"));
+  EXPECT_EQ(rows[1], distances("distances '" + elephant + "' --source 10"));
+  EXPECT_EQ(rows[2], distances("distances '" + elephant + "' --source f:5:0.2:0.3:0.5"));
+  // the same with one thread
+  EXPECT_EQ(parse_rows(output_of("matrix '" + elephant + "' --source 0,10,f:5:0.2:0.3:0.5 --threads 1", "m1.txt")),
+            rows);
+}
+
+TEST_F(Tool, matrix_square_npy_and_sparse_mtx)
+{
+  output_of("matrix '" + elephant + "' --source 0,10,100,1000 --target sources", "m.txt");
+  const auto square = parse_rows(read_text(path("m.txt")));
+  ASSERT_EQ(square.size(), 4u);
+  for(std::size_t i = 0; i < 4; ++i) {
+    EXPECT_EQ(square[i][i], 0.);
+    for(std::size_t j = 0; j < i; ++j)
+      EXPECT_NEAR(square[i][j], square[j][i], 1e-12);
+  }
+  // .npy: NumPy's header (magic, version 1.0, a dict with the shape), then the rows as float64
+  const std::string npy = output_of("matrix '" + elephant + "' --source 0,10,100,1000 --target sources", "m.npy");
+  ASSERT_GE(npy.size(), 10u);
+  EXPECT_EQ(npy.substr(0, 8), std::string("\x93NUMPY\x01\x00", 8));
+  const std::size_t header = std::size_t((unsigned char)npy[8]) + 256 * std::size_t((unsigned char)npy[9]);
+  EXPECT_EQ((10 + header) % 64, 0u);
+  EXPECT_NE(npy.find("'descr': '<f8', 'fortran_order': False, 'shape': (4, 4)"), std::string::npos);
+  ASSERT_EQ(npy.size(), 10 + header + 16 * sizeof(double));
+  for(std::size_t k = 0; k < 16; ++k) {
+    double x;
+    std::memcpy(&x, npy.data() + 10 + header + k * sizeof(double), sizeof x);
+    EXPECT_EQ(x, square[k / 4][k % 4]);
+  }
+  // .mtx within a radius: exactly the finite entries of the rows cut at that distance
+  const double radius = 0.2;
+  const auto full = parse_rows(output_of("matrix '" + elephant + "' --source 0,10", "full.txt"));
+  const std::string mtx = output_of("matrix '" + elephant + "' --source 0,10 --max-distance 0.2", "m.mtx");
+  const std::vector<std::string> lines = lines_of(mtx);
+  ASSERT_GE(lines.size(), 3u);
+  EXPECT_EQ(lines[0], "%%MatrixMarket matrix coordinate real general");
+  std::size_t expected_entries = 0;
+  for(const auto& row : full)
+    for(double d : row)
+      expected_entries += d <= radius;
+  std::istringstream size_line(lines[2]);
+  std::size_t rows = 0, columns = 0, entries = 0;
+  size_line >> rows >> columns >> entries;
+  EXPECT_EQ(rows, 2u);
+  EXPECT_EQ(columns, full[0].size());
+  EXPECT_EQ(entries, expected_entries);
+  ASSERT_EQ(lines.size(), 3 + entries);
+  for(std::size_t k = 3; k < lines.size(); ++k) {
+    std::istringstream in(lines[k]);
+    std::size_t i = 0, j = 0;
+    double d = 0;
+    in >> i >> j >> d;
+    ASSERT_TRUE(i >= 1 && i <= 2 && j >= 1 && j <= columns) << lines[k];
+    EXPECT_EQ(d, full[i - 1][j - 1]);
+  }
+}
+
+TEST_F(Tool, matrix_bad_input_writes_no_file)
+{
+  const std::string mesh = "matrix '" + elephant + "'";
+  const std::vector<std::pair<std::string, std::string>> cases = {
+    {mesh + " --source 0 --output m.vtk", "unknown output format '.vtk' for a matrix"},
+    {mesh + " --output m.npy", "give the sources with --source, or --all"},
+    {mesh + " --source 0 --target f:1:0.2:0.3:0.5 --output m.npy", "the columns of a matrix are vertices"},
+    {mesh + " --source f:1:0.2:0.3:0.5 --target sources --output m.npy", "is a face point"},
+    {mesh + " --source 0 --target 99999 --output m.npy", "out of range"},
+    {mesh + " --source 99999 --output m.npy", "out of range"},
+    {mesh + " --source 0 --max-distance -1 --output m.npy", "--max-distance must be non-negative"},
+  };
+  for(const auto& [args, message] : cases) {
+    const Result r = run(args);
+    EXPECT_EQ(r.exit_code, 1) << args;
+    EXPECT_NE(r.err.find("error: "), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(message), std::string::npos) << "expected '" << message << "' in: " << r.err;
+    EXPECT_FALSE(fs::exists(path("m.npy")) || fs::exists(path("m.vtk"))) << args;
+  }
+}
+
 } // namespace
