@@ -134,6 +134,24 @@ void check_a_source_is_on_a_face(const Mesh_file& file, const std::vector<Surfac
                      : std::string("every source is a vertex in no face of the mesh, so they reach no other vertex"));
 }
 
+/// Calls `f` with the sources as the library takes them: a range of one kind, vertices when all
+/// are vertices, face locations otherwise (a vertex as a corner of one of its faces).
+template <class Function>
+void with_library_sources(const Mesh_file& file, const std::vector<Surface_point>& sources, Function f)
+{
+  if(std::all_of(sources.begin(), sources.end(), [](const Surface_point& s) { return bool(s.vertex); })) {
+    std::vector<Vertex_index> vertices;
+    for(const Surface_point& s : sources)
+      vertices.push_back(mesh_vertex(file, s));
+    f(vertices);
+  } else {
+    std::vector<Face_location> locations;
+    for(const Surface_point& s : sources)
+      locations.push_back(s.vertex ? vertex_location(file, s) : library_location(file, s, "source"));
+    f(locations);
+  }
+}
+
 /// The library call for one concurrency tag; `approximation` is a named parameter that is
 /// either present or absent, so it is chosen here rather than given a neutral value.
 template <class ConcurrencyTag, class LibrarySources, class NamedParameters>
@@ -220,20 +238,9 @@ std::vector<double> compute_distances(Mesh_file& file, const std::vector<Surface
   check_a_source_is_on_a_face(file, sources);
   Mesh& mesh = file.mesh;
   auto distance = mesh.add_property_map<Vertex_index, double>("v:distance", infinity).first;
-  // The library takes a range of one kind of source: vertices, or face locations.
-  const bool only_vertices =
-    std::all_of(sources.begin(), sources.end(), [](const Surface_point& s) { return bool(s.vertex); });
-  if(only_vertices) {
-    std::vector<Vertex_index> vertices;
-    for(const Surface_point& s : sources)
-      vertices.push_back(mesh_vertex(file, s));
-    solve(file, distance, vertices, choice, stats);
-  } else {
-    std::vector<Face_location> locations;
-    for(const Surface_point& s : sources)
-      locations.push_back(s.vertex ? vertex_location(file, s) : library_location(file, s, "source"));
-    solve(file, distance, locations, choice, stats);
-  }
+  with_library_sources(file, sources, [&](const auto& library_sources) {
+    solve(file, distance, library_sources, choice, stats);
+  });
   std::vector<double> distance_of_point;
   for(Vertex_index v : file.vertex_of_point)
     distance_of_point.push_back(distance[v]);
@@ -261,20 +268,9 @@ void compute_distance_rows(const Mesh_file& file, const std::vector<Surface_poin
                     .max_distance(max_distance)
                     .number_of_threads(threads);
   const Thread_allowance allowance(threads);
-  // The library takes a range of one kind of source: vertices, or face locations.
-  const bool only_vertices =
-    std::all_of(sources.begin(), sources.end(), [](const Surface_point& s) { return bool(s.vertex); });
-  if(only_vertices) {
-    std::vector<Vertex_index> vertices;
-    for(const Surface_point& s : sources)
-      vertices.push_back(mesh_vertex(file, s));
-    CGAL_ext::geodesic_distance_rows<Parallel_tag>(file.mesh, vertices, to_file_order, np);
-  } else {
-    std::vector<Face_location> locations;
-    for(const Surface_point& s : sources)
-      locations.push_back(s.vertex ? vertex_location(file, s) : library_location(file, s, "source"));
-    CGAL_ext::geodesic_distance_rows<Parallel_tag>(file.mesh, locations, to_file_order, np);
-  }
+  with_library_sources(file, sources, [&](const auto& library_sources) {
+    CGAL_ext::geodesic_distance_rows<Parallel_tag>(file.mesh, library_sources, to_file_order, np);
+  });
 }
 
 } // namespace geodesic_tool
