@@ -61,6 +61,13 @@ void geodesic_distance_rows(const TriangleMesh& tm, const Sources& sources, RowF
 /// the dense distance matrix from `sources` to every vertex of `tm`, row-major: entry
 /// `i * num_vertices(tm) + j` is the distance from source `i` to the vertex of index `j`.
 /// The same as collecting the rows of `geodesic_distance_rows()`, with the same parameters.
+///
+/// \tparam ConcurrencyTag, TriangleMesh, Sources as for `geodesic_distance_rows()`
+/// \param tm the triangle mesh
+/// \param sources the sources, one row each
+/// \param np optional named parameters, as for `geodesic_distance_rows()`
+/// \return the `sources.size()` x `num_vertices(tm)` matrix, row-major
+/// \throws Geodesic_error as `geodesic_distance_rows()`
 template <class ConcurrencyTag = CGAL::Sequential_tag, class TriangleMesh, class Sources,
           class NamedParameters = parameters::Default_named_parameters_type>
 std::vector<double> geodesic_distance_matrix(const TriangleMesh& tm, const Sources& sources,
