@@ -29,6 +29,7 @@ struct List_task
   Window* input = nullptr;  // the list's windows, detached from it
   double apex_distance = 0; // shortest path to the apex found through the list
   std::vector<Window> windows;  // the input, trimmed and pruned
+  std::vector<double> crossings; // per window: where its ray to the apex crosses the edge
   Window_chain to_ac, to_cb;    // children for the lists across A->C and C->B
 };
 
@@ -258,9 +259,7 @@ private:
 
   void insert_window(int h, const Window_geometry& geometry)
   {
-    Window w;
-    static_cast<Window_geometry&>(w) = geometry;
-    w.next = nullptr;
+    Window w = list_window(geometry);
     if(keep_window(w, h, m_distance[m_mesh.source(h)], m_distance[m_mesh.target(h)])) {
       Window_chain chain;
       chain.push_back(m_pool.allocate(m_main_slot, w));
@@ -431,12 +430,14 @@ private:
     const Halfedge_frame& f = m_mesh.frame[h];
     const double d_from = m_distance[m_mesh.source(h)];
     const double d_to = m_distance[m_mesh.target(h)];
-    for(const Window* p = task.input; p; p = p->next) {
-      Window w = *p;
-      if(keep_window(w, h, d_from, d_to))
-        windows.push_back(w);
+    for(Window* p = task.input; p;) {
+      Window* next = p->next;
+      windows.push_back(*p);
+      if(!keep_window(windows.back(), h, d_from, d_to))
+        windows.pop_back();
+      m_pool.release_one(slot, p);
+      p = next;
     }
-    m_pool.release_chain(slot, task.input);
     task.input = nullptr;
     if(windows.empty())
       return;
@@ -444,9 +445,13 @@ private:
 
     // "One angle, two sides": the window with the shortest path to the apex splits the edge.
     double best = infinity(), split = 0;
-    for(const Window& w : windows) {
+    std::vector<double>& crossings = task.crossings;
+    crossings.resize(windows.size());
+    for(std::size_t i = 0; i < windows.size(); ++i) {
+      const Window& w = windows[i];
       double p;
-      const double d = distance_to_apex(w, apex_crossing(w, f.apex_x, f.apex_y), f.apex_x, f.apex_y, p);
+      crossings[i] = apex_crossing(w, f.apex_x, f.apex_y);
+      const double d = distance_to_apex(w, crossings[i], f.apex_x, f.apex_y, p);
       if(d < best) {
         best = d;
         split = p;
@@ -456,11 +461,12 @@ private:
 
     const double d_apex = std::min(m_distance[m_mesh.apex(h)], best);
     const Face_crossing across = face_crossing(m_mesh, h);
-    for(const Window& w : windows) {
-      const double crossing = apex_crossing(w, f.apex_x, f.apex_y);
+    for(std::size_t i = 0; i < windows.size(); ++i) {
+      const Window& w = windows[i];
+      const double crossing = crossings[i];
       make_children(w, across, std::min(split, crossing), std::max(split, crossing), m_min_window_length,
                     [&](int g, const Window_geometry& geometry, bool onto_ac) {
-                      Window child{geometry, nullptr};
+                      Window child = list_window(geometry);
                       // A -> C runs from the source of h to the apex, C -> B from the apex to the target
                       if(onto_ac ? keep_window(child, g, d_from, d_apex) : keep_window(child, g, d_apex, d_to))
                         (onto_ac ? task.to_ac : task.to_cb).push_back(m_pool.allocate(slot, child));
