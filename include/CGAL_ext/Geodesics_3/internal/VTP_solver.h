@@ -29,7 +29,6 @@ struct List_task
   Window* input = nullptr;  // the list's windows, detached from it
   double apex_distance = 0; // shortest path to the apex found through the list
   std::vector<Window> windows;  // the input, trimmed and pruned
-  std::vector<double> crossings; // per window: where its ray to the apex crosses the edge
   Window_chain to_ac, to_cb;    // children for the lists across A->C and C->B
 };
 
@@ -445,13 +444,9 @@ private:
 
     // "One angle, two sides": the window with the shortest path to the apex splits the edge.
     double best = infinity(), split = 0;
-    std::vector<double>& crossings = task.crossings;
-    crossings.resize(windows.size());
-    for(std::size_t i = 0; i < windows.size(); ++i) {
-      const Window& w = windows[i];
+    for(const Window& w : windows) {
       double p;
-      crossings[i] = apex_crossing(w, f.apex_x, f.apex_y);
-      const double d = distance_to_apex(w, crossings[i], f.apex_x, f.apex_y, p);
+      const double d = distance_to_apex(w, apex_crossing(w, f.apex_x, f.apex_y), f.apex_x, f.apex_y, p);
       if(d < best) {
         best = d;
         split = p;
@@ -461,9 +456,8 @@ private:
 
     const double d_apex = std::min(m_distance[m_mesh.apex(h)], best);
     const Face_crossing across = face_crossing(m_mesh, h);
-    for(std::size_t i = 0; i < windows.size(); ++i) {
-      const Window& w = windows[i];
-      const double crossing = crossings[i];
+    for(const Window& w : windows) {
+      const double crossing = apex_crossing(w, f.apex_x, f.apex_y);
       make_children(w, across, std::min(split, crossing), std::max(split, crossing), m_min_window_length,
                     [&](int g, const Window_geometry& geometry, bool onto_ac) {
                       Window child = list_window(geometry);
