@@ -223,6 +223,7 @@ inline int compare_on_overlap(const Window_geometry& w0, const Window_geometry& 
   return n;
 }
 
+/// The same, the distances at lo and hi computed here.
 inline int compare_on_overlap(const Window_geometry& w0, const Window_geometry& w1, double lo, double hi, double cut[4], int winner[3])
 {
   return compare_on_overlap(w0, w1, lo, hi, distance_at(w0, lo), distance_at(w0, hi), distance_at(w1, lo),
