@@ -47,7 +47,7 @@ struct Mesh_cache
   std::vector<std::int32_t> corner_vertex;     // per half-edge: its source vertex
   std::vector<std::int32_t> opposite_halfedge; // per half-edge, -1 on the border
   std::vector<Halfedge_frame> frame;           // per half-edge
-  std::vector<double> corner_angle;            // per half-edge: the angle at its source vertex
+  std::vector<double> corner_angle;            // per half-edge: the angle at its source vertex; only while built
   std::vector<std::int32_t> first_outgoing;    // per vertex, -1 if isolated; a border one first
   std::vector<double> angle_sum;               // per vertex
   std::vector<std::uint8_t> is_border_vertex;  // per vertex
@@ -184,6 +184,8 @@ inline void Mesh_cache::finish(const std::vector<std::vector<int>>& glued_groups
   number_of_vertices = position.size();
   glue_vertices(groups);
   compute_vertex_flags();
+  // the angle sums are all the solvers need of the corner angles
+  std::vector<double>().swap(corner_angle);
 }
 
 inline bool Mesh_cache::compute_frames()

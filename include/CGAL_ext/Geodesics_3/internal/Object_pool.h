@@ -68,6 +68,14 @@ public:
       w = next;
     }
   }
+  /// Frees `w` alone, whatever it links to.
+  void release_one(std::size_t slot, T* w)
+  {
+    Slot& s = m_slots[slot];
+    w->next = s.free;
+    s.free = w;
+    --s.live;
+  }
   /// Frees `w` alone.
   void release(std::size_t slot, T* w)
   {

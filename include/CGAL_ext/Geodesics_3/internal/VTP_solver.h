@@ -258,9 +258,7 @@ private:
 
   void insert_window(int h, const Window_geometry& geometry)
   {
-    Window w;
-    static_cast<Window_geometry&>(w) = geometry;
-    w.next = nullptr;
+    Window w = list_window(geometry);
     if(keep_window(w, h, m_distance[m_mesh.source(h)], m_distance[m_mesh.target(h)])) {
       Window_chain chain;
       chain.push_back(m_pool.allocate(m_main_slot, w));
@@ -431,12 +429,14 @@ private:
     const Halfedge_frame& f = m_mesh.frame[h];
     const double d_from = m_distance[m_mesh.source(h)];
     const double d_to = m_distance[m_mesh.target(h)];
-    for(const Window* p = task.input; p; p = p->next) {
-      Window w = *p;
-      if(keep_window(w, h, d_from, d_to))
-        windows.push_back(w);
+    for(Window* p = task.input; p;) {
+      Window* next = p->next;
+      windows.push_back(*p);
+      if(!keep_window(windows.back(), h, d_from, d_to))
+        windows.pop_back();
+      m_pool.release_one(slot, p);
+      p = next;
     }
-    m_pool.release_chain(slot, task.input);
     task.input = nullptr;
     if(windows.empty())
       return;
@@ -460,7 +460,7 @@ private:
       const double crossing = apex_crossing(w, f.apex_x, f.apex_y);
       make_children(w, across, std::min(split, crossing), std::max(split, crossing), m_min_window_length,
                     [&](int g, const Window_geometry& geometry, bool onto_ac) {
-                      Window child{geometry, nullptr};
+                      Window child = list_window(geometry);
                       // A -> C runs from the source of h to the apex, C -> B from the apex to the target
                       if(onto_ac ? keep_window(child, g, d_from, d_apex) : keep_window(child, g, d_apex, d_to))
                         (onto_ac ? task.to_ac : task.to_cb).push_back(m_pool.allocate(slot, child));

@@ -28,9 +28,12 @@ struct Window_geometry
   double sigma;
 };
 
-/// A window of a list (VTP keeps its windows in lists per half-edge).
-struct Window : Window_geometry
+/// A window of a list (VTP keeps its windows in lists per half-edge), with the distances at
+/// the ends of its interval, kept equal to `distance_at(b0)` and `distance_at(b1)` so that
+/// trimming and clipping reuse them: one cache line.
+struct alignas(64) Window : Window_geometry
 {
+  double d0, d1;
   Window* next; // next window of the same list
 };
 
@@ -39,6 +42,17 @@ struct Window : Window_geometry
 inline double norm2d(double x, double y) { return std::sqrt(x * x + y * y); }
 
 inline double distance_at(const Window_geometry& w, double x) { return w.sigma + norm2d(x - w.sx, w.sy); }
+
+/// A list window of `g`, its end distances computed.
+inline Window list_window(const Window_geometry& g)
+{
+  Window w;
+  static_cast<Window_geometry&>(w) = g;
+  w.d0 = distance_at(g, g.b0);
+  w.d1 = distance_at(g, g.b1);
+  w.next = nullptr;
+  return w;
+}
 
 /// The smallest distance the window gives to a point of its interval.
 inline double window_key(const Window_geometry& w)
@@ -55,15 +69,16 @@ inline double window_key(const Window_geometry& w)
 /// D(x) - x is non-increasing and D(x) + x non-decreasing, so the part beaten by the source
 /// vertex of the half-edge is an initial segment and the part beaten by its target a final one.
 /// `d_from`/`d_to` are the current distances of the source/target vertex of the half-edge.
+/// `at_b0`/`at_b1` are the distances at the ends of the window, updated with them.
 /// Returns false when nothing is left; otherwise `key` is the window's smallest distance.
-inline bool trim_by_edge_vertices(Window_geometry& w, double length, double d_from, double d_to, double& key)
+inline bool trim_by_edge_vertices(Window_geometry& w, double& at_b0, double& at_b1, double length, double d_from,
+                                  double d_to, double& key)
 {
-  const double r2 = w.sx * w.sx + w.sy * w.sy;
-  double at_b0 = distance_at(w, w.b0), at_b1 = distance_at(w, w.b1);
   if(at_b1 - w.b1 > d_from || at_b0 + w.b0 > d_to + length)
     return false;
   if(at_b0 - w.b0 > d_from) {
     // sigma + |s - x| = d_from + x
+    const double r2 = w.sx * w.sx + w.sy * w.sy;
     const double k = d_from - w.sigma;
     const double x = (r2 - k * k) / (2 * (k + w.sx));
     if(std::isfinite(x)) { // not when the pseudo-source lies on the edge's line (0/0)
@@ -73,6 +88,7 @@ inline bool trim_by_edge_vertices(Window_geometry& w, double length, double d_fr
   }
   if(at_b1 + w.b1 > d_to + length) {
     // sigma + |s - x| = d_to + length - x
+    const double r2 = w.sx * w.sx + w.sy * w.sy;
     const double m = d_to + length - w.sigma;
     const double x = (m * m - r2) / (2 * (m - w.sx));
     if(std::isfinite(x)) {
@@ -82,6 +98,13 @@ inline bool trim_by_edge_vertices(Window_geometry& w, double length, double d_fr
   }
   key = (w.sx > w.b0 && w.sx < w.b1) ? w.sigma - w.sy : std::min(at_b0, at_b1);
   return w.b1 > w.b0;
+}
+
+/// The same, the distances at the ends computed here.
+inline bool trim_by_edge_vertices(Window_geometry& w, double length, double d_from, double d_to, double& key)
+{
+  double at_b0 = distance_at(w, w.b0), at_b1 = distance_at(w, w.b1);
+  return trim_by_edge_vertices(w, at_b0, at_b1, length, d_from, d_to, key);
 }
 
 /// Where the line from the pseudo-source to the apex (cx, cy) crosses the x-axis.
@@ -105,6 +128,21 @@ inline double distance_to_apex(const Window_geometry& w, double crossing, double
   return distance_at(w, p) + norm2d(cx - p, cy);
 }
 
+/// The same for a list window, whose end distances are known.
+inline double distance_to_apex(const Window& w, double crossing, double cx, double cy, double& p)
+{
+  if(crossing < w.b0) {
+    p = w.b0;
+    return w.d0 + norm2d(cx - p, cy);
+  }
+  if(crossing > w.b1) {
+    p = w.b1;
+    return w.d1 + norm2d(cx - p, cy);
+  }
+  p = crossing;
+  return w.sigma + norm2d(cx - w.sx, cy - w.sy);
+}
+
 /// The points of (lo, hi) where two windows of the same edge give equal distances, sorted;
 /// returns how many (0 to 2). With delta = sigma0 - sigma1, D1 = D0 reads
 /// |x - s1| = |x - s0| + delta; squaring once gives alpha x + beta = 2 delta |x - s0|, and a
@@ -117,9 +155,10 @@ inline int equal_distance_points(const Window_geometry& w0, const Window_geometr
   const double beta = w1.sx * w1.sx + w1.sy * w1.sy - w0.sx * w0.sx - w0.sy * w0.sy - delta * delta;
   int n = 0;
   auto keep = [&](double x) {
-    // |x - s1| = |x - s0| + delta needs |x - s0| + delta >= 0, and then alpha x + beta has the
-    // sign of delta; both are checked (the pieces' winners are checked again at their midpoints)
-    if(x > lo && x < hi && (alpha * x + beta) * delta >= 0 && norm2d(x - w0.sx, w0.sy) + delta >= 0)
+    // |x - s1| = |x - s0| + delta needs |x - s0| + delta >= 0 (true when delta >= 0), and then
+    // alpha x + beta has the sign of delta; both are checked (the pieces' winners are checked
+    // again at their midpoints)
+    if(x > lo && x < hi && (alpha * x + beta) * delta >= 0 && (delta >= 0 || norm2d(x - w0.sx, w0.sy) + delta >= 0))
       roots[n++] = x;
   };
   if(delta == 0) {
@@ -153,12 +192,12 @@ inline int equal_distance_points(const Window_geometry& w0, const Window_geometr
 /// Compares two windows of the same edge on their overlap [lo, hi]: splits it at the points
 /// where they give equal distances into `n - 1` pieces (1 to 3), [cut[i], cut[i+1]], and tells
 /// which window is shorter on each (`winner[i]`: 0 for w0, 1 for w1). Returns n.
-inline int compare_on_overlap(const Window_geometry& w0, const Window_geometry& w1, double lo, double hi, double cut[4], int winner[3])
+/// `lo0`, `hi0` (`lo1`, `hi1`) are the distances w0 (w1) gives at lo and hi.
+inline int compare_on_overlap(const Window_geometry& w0, const Window_geometry& w1, double lo, double hi, double lo0,
+                              double hi0, double lo1, double hi1, double cut[4], int winner[3])
 {
   // A distance is convex along the edge: its largest value on the overlap is at an end. When
   // one window's largest value is no more than the other's smallest, no equation is solved.
-  const double lo0 = distance_at(w0, lo), hi0 = distance_at(w0, hi);
-  const double lo1 = distance_at(w1, lo), hi1 = distance_at(w1, hi);
   auto smallest = [&](const Window_geometry& w, double d_lo, double d_hi) {
     return (w.sx > lo && w.sx < hi) ? w.sigma - w.sy : std::min(d_lo, d_hi);
   };
@@ -184,21 +223,33 @@ inline int compare_on_overlap(const Window_geometry& w0, const Window_geometry& 
   return n;
 }
 
-/// Clips two windows of the same edge against each other where they overlap: a window loses the
-/// part of the overlap where the other one is strictly shorter, when that part is at an end of
-/// its interval (a loss strictly inside its interval would split it, and is left alone).
-/// Returns a bit set: 1 if w0 became empty, 2 if w1 did.
-inline int clip_pair(Window_geometry& w0, Window_geometry& w1)
+/// The same, the distances at lo and hi computed here.
+inline int compare_on_overlap(const Window_geometry& w0, const Window_geometry& w1, double lo, double hi, double cut[4], int winner[3])
+{
+  return compare_on_overlap(w0, w1, lo, hi, distance_at(w0, lo), distance_at(w0, hi), distance_at(w1, lo),
+                            distance_at(w1, hi), cut, winner);
+}
+
+/// Clips two list windows of the same edge against each other where they overlap: a window
+/// loses the part of the overlap where the other one is strictly shorter, when that part is at
+/// an end of its interval (a loss strictly inside its interval would split it, and is left
+/// alone). Returns a bit set: 1 if w0 became empty, 2 if w1 did.
+inline int clip_pair(Window& w0, Window& w1)
 {
   const double lo = std::max(w0.b0, w1.b0), hi = std::min(w0.b1, w1.b1);
   if(!(hi > lo))
     return 0;
+  // lo and hi are ends of the windows: where they are a window's own end, its distance is known
+  const double lo0 = lo == w0.b0 ? w0.d0 : distance_at(w0, lo);
+  const double hi0 = hi == w0.b1 ? w0.d1 : distance_at(w0, hi);
+  const double lo1 = lo == w1.b0 ? w1.d0 : distance_at(w1, lo);
+  const double hi1 = hi == w1.b1 ? w1.d1 : distance_at(w1, hi);
   double cut[4];
   int winner[3];
-  const int n = compare_on_overlap(w0, w1, lo, hi, cut, winner);
+  const int n = compare_on_overlap(w0, w1, lo, hi, lo0, hi0, lo1, hi1, cut, winner);
   // A window gives up the pieces the other one wins, from each end of the overlap that is an
   // end of its own interval, inwards. Returns true if nothing is left of it.
-  auto trim = [&](Window_geometry& w, int other) {
+  auto trim = [&](Window& w, double d_lo, double d_hi, int other) {
     int first = 0, last = n - 2;
     if(w.b0 == lo)
       while(first <= last && winner[first] == other)
@@ -209,22 +260,29 @@ inline int clip_pair(Window_geometry& w0, Window_geometry& w1)
     if(first > last) {
       if(w.b0 == lo && w.b1 == hi)
         return true;
-      if(w.b0 == lo)
+      if(w.b0 == lo) {
         w.b0 = hi;
-      else
+        w.d0 = d_hi;
+      } else {
         w.b1 = lo;
+        w.d1 = d_lo;
+      }
       return false;
     }
-    if(first > 0)
+    if(first > 0) {
       w.b0 = cut[first];
-    if(last < n - 2)
+      w.d0 = distance_at(w, w.b0);
+    }
+    if(last < n - 2) {
       w.b1 = cut[last + 1];
+      w.d1 = distance_at(w, w.b1);
+    }
     return false;
   };
   int result = 0;
-  if(trim(w0, 1))
+  if(trim(w0, lo0, hi0, 1))
     result |= 1;
-  if(trim(w1, 0))
+  if(trim(w1, lo1, hi1, 0))
     result |= 2;
   return result;
 }
