@@ -48,13 +48,7 @@ template <class ConcurrencyTag = CGAL::Sequential_tag, class TriangleMesh, class
 void geodesic_distance_rows(const TriangleMesh& tm, const Sources& sources, RowFunction row,
                             const NamedParameters& np = parameters::default_values())
 {
-#ifndef CGAL_LINKED_WITH_TBB
-  static_assert(!std::is_same<ConcurrencyTag, CGAL::Parallel_tag>::value,
-                "CGAL_ext::geodesic_distance_rows: CGAL::Parallel_tag needs TBB (CGAL_LINKED_WITH_TBB); "
-                "use CGAL::Sequential_tag or CGAL::Parallel_if_available_tag");
-#endif
-  constexpr bool parallel = std::is_same<ConcurrencyTag, CGAL::Parallel_tag>::value;
-  Geodesics_3::internal::distance_rows<parallel>(tm, sources, row, np);
+  Geodesics_3::internal::distance_rows<Geodesics_3::internal::is_parallel_tag<ConcurrencyTag>()>(tm, sources, row, np);
 }
 
 /// \ingroup PkgGeodesics3Ref

@@ -134,13 +134,8 @@ template <class ConcurrencyTag = CGAL::Sequential_tag, class TriangleMesh, class
 void geodesic_distances(const TriangleMesh& tm, VertexDistanceMap vertex_distance_map,
                         const Sources& sources, const NamedParameters& np = parameters::default_values())
 {
-#ifndef CGAL_LINKED_WITH_TBB
-  static_assert(!std::is_same<ConcurrencyTag, CGAL::Parallel_tag>::value,
-                "CGAL_ext::geodesic_distances: CGAL::Parallel_tag needs TBB (CGAL_LINKED_WITH_TBB); "
-                "use CGAL::Sequential_tag or CGAL::Parallel_if_available_tag");
-#endif
-  constexpr bool parallel = std::is_same<ConcurrencyTag, CGAL::Parallel_tag>::value;
   namespace internal = Geodesics_3::internal;
+  constexpr bool parallel = internal::is_parallel_tag<ConcurrencyTag>();
   const auto start = std::chrono::steady_clock::now();
   typedef internal::Vertex_point_map_of<TriangleMesh, NamedParameters> Vertex_point_map;
   const internal::Solver_settings settings = internal::read_solver_settings(np, VTP);

@@ -18,6 +18,7 @@
 
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/boost/graph/properties.h>
+#include <CGAL/tags.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/task_arena.h>
@@ -199,6 +200,19 @@ private:
 /// The vertex point map type of `TriangleMesh` with the named parameters `NamedParameters`.
 template <class TriangleMesh, class NamedParameters>
 using Vertex_point_map_of = typename CGAL::GetVertexPointMap<TriangleMesh, NamedParameters>::const_type;
+
+/// Whether `ConcurrencyTag` asks for the parallel solvers; `CGAL::Parallel_tag` without TBB does
+/// not compile, with a message saying why.
+template <class ConcurrencyTag>
+constexpr bool is_parallel_tag()
+{
+#ifndef CGAL_LINKED_WITH_TBB
+  static_assert(!std::is_same<ConcurrencyTag, CGAL::Parallel_tag>::value,
+                "CGAL_ext: CGAL::Parallel_tag needs TBB (CGAL_LINKED_WITH_TBB); "
+                "use CGAL::Sequential_tag or CGAL::Parallel_if_available_tag");
+#endif
+  return std::is_same<ConcurrencyTag, CGAL::Parallel_tag>::value;
+}
 
 /// Calls `f()` in a task arena of `threads` threads (0: TBB's choice) when parallel, here
 /// otherwise: the arena bounds the threads of this call only, never a process-wide setting.
