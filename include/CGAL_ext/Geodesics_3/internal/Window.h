@@ -30,12 +30,15 @@ struct Window_geometry
 
 /// A window of a list (VTP keeps its windows in lists per half-edge), with the distances at
 /// the ends of its interval, kept equal to `distance_at(b0)` and `distance_at(b1)` so that
-/// trimming and clipping reuse them: one cache line.
-struct alignas(64) Window : Window_geometry
+/// trimming and clipping reuse them: 64 bytes, the size of a cache line. (Not `alignas(64)`:
+/// the lists' windows are sorted by value, and GCC notes at every such call that passing
+/// over-aligned values changed ABI.)
+struct Window : Window_geometry
 {
   double d0, d1;
   Window* next; // next window of the same list
 };
+static_assert(sizeof(Window) == 64, "a list window is one cache line");
 
 /// Planar length of (x, y). std::hypot guards against overflow at a large cost; coordinates of
 /// a mesh are far from that range.
