@@ -301,15 +301,13 @@ private:
         best_in_face(Mesh_cache::face(o), barycentric_in(Mesh_cache::face(o), p), best);
     } else {
       // through any face around the vertex, or around a vertex glued to it
-      auto around = [&](int v) {
+      m_mesh.for_each_copy_of_point(p.vertex, [&](int v) {
         m_mesh.for_each_outgoing(v, [&](int h) {
           std::array<double, 3> b{{0., 0., 0.}};
           b[h % 3] = 1;
           best_in_face(Mesh_cache::face(h), b, best);
         });
-      };
-      around(p.vertex);
-      m_mesh.for_each_glued(p.vertex, around);
+      });
     }
     return best;
   }

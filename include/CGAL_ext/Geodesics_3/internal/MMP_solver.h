@@ -150,11 +150,8 @@ private:
 
   void relax(const Vertex_update& u)
   {
-    if(u.distance < m_distance[u.vertex]) {
-      set_distance(u.vertex, u);
-      if(m_mesh.is_glued(u.vertex))
-        m_mesh.for_each_glued(u.vertex, [&](int g) { set_distance(g, u); });
-    }
+    if(u.distance < m_distance[u.vertex])
+      m_mesh.for_each_copy_of_point(u.vertex, [&](int g) { set_distance(g, u); });
   }
 
   void set_distance(int v, const Vertex_update& u)

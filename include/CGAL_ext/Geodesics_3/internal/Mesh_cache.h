@@ -33,6 +33,14 @@ struct Halfedge_frame
   double apex_y;
 };
 
+/// The one test of a degenerate triangle, from its side lengths and twice its area: a side of
+/// zero length, or a height below `degenerate_height_ratio` of the longest side.
+inline bool is_degenerate_shape(double a, double b, double c, double twice_area)
+{
+  const double longest = std::max({a, b, c});
+  return !(std::min({a, b, c}) > 0) || !(twice_area > degenerate_height_ratio * longest * longest);
+}
+
 /// A flat, index-based copy of a triangle mesh: everything the propagation cores read, built in
 /// one pass so that no generic graph traversal runs inside a hot loop.
 ///
@@ -60,7 +68,6 @@ struct Mesh_cache
   // vertices the caller says are one point): per vertex, the next one of its group, in a cycle.
   // Empty when no vertex is glued.
   std::vector<std::int32_t> next_glued;
-  std::size_t number_of_glued_vertices = 0;
   // Faces [0, number_of_mesh_faces) are the caller's. A degenerate (zero-area) face is removed:
   // a cap (its middle vertex on its longest edge) by splitting the face beyond that edge at the
   // middle vertex, which adds a face numbered from number_of_mesh_faces on; a needle (an edge of
@@ -106,6 +113,13 @@ struct Mesh_cache
   void mesh_face_point(int f, const std::array<double, 3>& p, int& mesh_f, std::array<double, 3>& mesh_b) const;
 
   bool is_glued(int v) const { return !next_glued.empty() && next_glued[std::size_t(v)] != v; }
+  /// Calls `f(u)` for `v` and every vertex glued to it: the vertices of one point of the surface.
+  template <class Function>
+  void for_each_copy_of_point(int v, Function f) const
+  {
+    f(v);
+    for_each_glued(v, f);
+  }
   /// Calls `f(u)` for every other vertex glued to `v`.
   template <class Function>
   void for_each_glued(int v, Function f) const
@@ -225,8 +239,7 @@ inline bool Mesh_cache::compute_frames()
     }
     const double a = frame[3 * f].length, b = frame[3 * f + 1].length, c = frame[3 * f + 2].length;
     const double area = 0.5 * a * frame[3 * f].apex_y;
-    const double longest = std::max({a, b, c});
-    if(!(std::min({a, b, c}) > 0) || !(2 * area > degenerate_height_ratio * longest * longest))
+    if(is_degenerate_shape(a, b, c, 2 * area))
       none_degenerate = false;
     anisotropy_sum += 0.5 * (a + b + c) * std::max({a, b, c}) / (2 * std::sqrt(3.) * area);
   }
@@ -274,8 +287,7 @@ inline bool is_degenerate_triangle(const std::array<double, 3>& a, const std::ar
                                    const std::array<double, 3>& c)
 {
   using mesh_geometry::distance;
-  const double longest = std::max({distance(a, b), distance(b, c), distance(c, a)});
-  return !(longest > 0) || !(mesh_geometry::twice_area(a, b, c) > degenerate_height_ratio * longest * longest);
+  return is_degenerate_shape(distance(a, b), distance(b, c), distance(c, a), mesh_geometry::twice_area(a, b, c));
 }
 
 // Face g = face(y) becomes (source(y), c, apex(y)), and a new face (c, target(y), apex(y)) is
@@ -307,20 +319,19 @@ inline void Mesh_cache::split_face_at(int y, int c)
 inline void Mesh_cache::remove_degenerate_faces(std::vector<std::vector<int>>& glued_groups)
 {
   using mesh_geometry::distance;
-  std::vector<int> pending;
-  for(std::size_t f = 0; f < number_of_faces; ++f)
-    if(is_degenerate_triangle(position[std::size_t(corner_vertex[3 * f])], position[std::size_t(corner_vertex[3 * f + 1])],
-                              position[std::size_t(corner_vertex[3 * f + 2])]))
-      pending.push_back(int(f));
-  if(pending.empty())
-    return;
-  face_state.assign(number_of_faces, 0);
-  mesh_corner_vertex = corner_vertex;
   auto is_degenerate_face = [&](int f) {
     return is_degenerate_triangle(position[std::size_t(corner_vertex[std::size_t(3 * f)])],
                                   position[std::size_t(corner_vertex[std::size_t(3 * f + 1)])],
                                   position[std::size_t(corner_vertex[std::size_t(3 * f + 2)])]);
   };
+  std::vector<int> pending;
+  for(std::size_t f = 0; f < number_of_faces; ++f)
+    if(is_degenerate_face(int(f)))
+      pending.push_back(int(f));
+  if(pending.empty())
+    return;
+  face_state.assign(number_of_faces, 0);
+  mesh_corner_vertex = corner_vertex;
   auto pair = [&](int h, int g) {
     if(h >= 0)
       opposite_halfedge[std::size_t(h)] = g;
@@ -425,9 +436,7 @@ inline void Mesh_cache::relocate_face_point(int& f, std::array<double, 3>& b) co
     }
   };
   for(int k = 0; k < 3; ++k) {
-    const int v = mesh_corner_vertex[std::size_t(3 * f + k)];
-    for_each_outgoing(v, consider);
-    for_each_glued(v, [&](int u) { for_each_outgoing(u, consider); });
+    for_each_copy_of_point(mesh_corner_vertex[std::size_t(3 * f + k)], [&](int u) { for_each_outgoing(u, consider); });
   }
   if(best < 0)
     throw Geodesic_error("a point of degenerate face " + std::to_string(f) + " lies in no face of the mesh");
@@ -518,7 +527,6 @@ inline void Mesh_cache::check_glued_groups(const std::vector<std::vector<int>>& 
 inline void Mesh_cache::glue_vertices(const std::vector<std::vector<int>>& groups)
 {
   next_glued.clear();
-  number_of_glued_vertices = 0;
   if(mesh_vertex_of_copy.empty() && groups.empty())
     return;
   const std::size_t nv = position.size();
@@ -548,9 +556,10 @@ inline void Mesh_cache::glue_vertices(const std::vector<std::vector<int>>& group
     }
     last[std::size_t(r)] = std::int32_t(v);
   }
+  std::size_t glued = 0;
   for(std::size_t v = 0; v < nv; ++v)
-    number_of_glued_vertices += next_glued[v] != std::int32_t(v);
-  if(number_of_glued_vertices == 0)
+    glued += next_glued[v] != std::int32_t(v);
+  if(glued == 0)
     next_glued.clear();
 }
 

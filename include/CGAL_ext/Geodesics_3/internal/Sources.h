@@ -34,10 +34,10 @@ inline void check_has_sources(const Mesh_cache& m, const std::vector<Source_poin
   if(sources.empty())
     throw Geodesic_error("no source was given");
   auto isolated = [&](const Source_point& s) {
-    if(s.vertex < 0 || m.first_outgoing[std::size_t(s.vertex)] >= 0)
+    if(s.vertex < 0)
       return false;
     bool any_face = false;
-    m.for_each_glued(s.vertex, [&](int u) { any_face |= m.first_outgoing[std::size_t(u)] >= 0; });
+    m.for_each_copy_of_point(s.vertex, [&](int u) { any_face |= m.first_outgoing[std::size_t(u)] >= 0; });
     return !any_face;
   };
   if(std::all_of(sources.begin(), sources.end(), isolated))

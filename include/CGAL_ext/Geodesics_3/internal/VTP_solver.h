@@ -149,11 +149,8 @@ private:
 
   void relax(int v, double d)
   {
-    if(d < m_distance[v]) {
-      set_distance(v, d);
-      if(m_mesh.is_glued(v))
-        m_mesh.for_each_glued(v, [&](int u) { set_distance(u, d); });
-    }
+    if(d < m_distance[v])
+      m_mesh.for_each_copy_of_point(v, [&](int u) { set_distance(u, d); });
   }
 
   void set_distance(int v, double d)
