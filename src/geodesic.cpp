@@ -78,18 +78,27 @@ int run_distances(const Distances_options& options)
   const Solver_choice choice = solver_choice(options.solver, false);
   const std::vector<Surface_point> sources = parse_sources(options.sources);
   const Output_format format = options.output.empty() ? Output_format::txt : output_format(options.output);
+  const Output_format labels_format = options.labels.empty() ? Output_format::txt : output_format(options.labels);
+  check_distinct_outputs({{"--output", options.output}, {"--labels", options.labels}});
 
   double seconds_read = 0;
   Mesh_file file = read_mesh(options.mesh, seconds_read);
   check_ranges(sources, file);
 
   CGAL_ext::Geodesic_statistics stats;
-  const std::vector<double> distances = compute_distances(file, sources, choice, stats);
+  std::vector<long> labels;
+  const std::vector<double> distances = compute_distances(file, sources, choice, stats, labels);
 
-  write_output(options.output, [&](std::ostream& os) {
-    return format == Output_format::ply ? write_distances_ply(os, file.soup, distances)
-                                        : write_distances_txt(os, distances);
-  });
+  std::vector<Output_file> outputs{{options.output, [&](std::ostream& os) {
+                                      return format == Output_format::ply ? write_distances_ply(os, file.soup, distances)
+                                                                          : write_distances_txt(os, distances);
+                                    }}};
+  if(!options.labels.empty())
+    outputs.push_back({options.labels, [&](std::ostream& os) {
+                         return labels_format == Output_format::ply ? write_labels_ply(os, file.soup, distances, labels)
+                                                                    : write_labels_txt(os, labels);
+                       }});
+  write_outputs(outputs);
 
   print_note(file);
   if(options.stats) {

@@ -107,6 +107,10 @@ void add_distances_command(CLI::App& app, Distances_options& options)
   cmd->add_option("--output", options.output,
                   "Output file: .txt (one distance per line, vertex order) or .ply (the file's vertices and faces "
                   "with a per-vertex 'distance' and a colour ramp); default: txt on the standard output");
+  cmd->add_option("--labels", options.labels,
+                  "Also write the nearest source of every vertex (its geodesic Voronoi cell), the index of the "
+                  "source in the order given, -1 where none reaches: .txt (one per line, vertex order) or .ply "
+                  "(the file's vertices and faces with per-vertex 'distance' and 'source' and a colour per cell)");
   cmd->add_flag("--stats", options.stats, "Print key=value statistics on the standard error");
 }
 
@@ -259,6 +263,15 @@ Output_format output_format(const std::string& path, bool obj_allowed)
     return Output_format::ply;
   throw Tool_error("unknown output format '" + path + "' (use " + (obj_allowed ? ".txt, .obj or .ply" : ".txt or .ply") +
                    ")");
+}
+
+void check_distinct_outputs(const std::vector<std::pair<std::string, std::string>>& outputs)
+{
+  for(std::size_t i = 0; i < outputs.size(); ++i)
+    for(std::size_t j = 0; j < i; ++j)
+      if(!outputs[i].second.empty() && outputs[i].second == outputs[j].second)
+        throw Tool_error(outputs[j].first + " and " + outputs[i].first + " name the same file '" + outputs[i].second +
+                         "'");
 }
 
 } // namespace geodesic_tool

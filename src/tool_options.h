@@ -40,6 +40,7 @@ struct Distances_options
   std::vector<std::string> sources;
   Solver_options solver{"vtp"};
   std::string output;
+  std::string labels; // nearest sources, when not empty
   bool stats = false;
 };
 
@@ -124,6 +125,10 @@ enum class Output_format { txt, obj, ply };
 
 /// The format of an output file, by its extension; .obj only where `obj_allowed` (paths).
 Output_format output_format(const std::string& path, bool obj_allowed = false);
+
+/// Throws Tool_error when two of the output files (option name, path; an empty path is the
+/// standard output, or no file) name the same file.
+void check_distinct_outputs(const std::vector<std::pair<std::string, std::string>>& outputs);
 
 } // namespace geodesic_tool
 

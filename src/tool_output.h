@@ -1,6 +1,6 @@
 // Copyright (c) 2026 The CGAL_ext geodesics developers.
-// The files the geodesic tool writes: distances (.txt, .ply) and paths (.txt, .obj, .ply), and
-// writing them so that an error never leaves a partial file.
+// The files the geodesic tool writes: distances and nearest-source labels (.txt, .ply) and paths
+// (.txt, .obj, .ply), and writing them so that an error never leaves a partial file.
 
 #ifndef GEODESIC_TOOL_OUTPUT_H
 #define GEODESIC_TOOL_OUTPUT_H
@@ -22,6 +22,17 @@ namespace geodesic_tool {
 /// existing one. Throws Tool_error naming the file when writing fails.
 void write_output(const std::string& path, const std::function<bool(std::ostream&)>& write);
 
+/// A file to write (empty path: the standard output) and how.
+struct Output_file
+{
+  std::string path;
+  std::function<bool(std::ostream&)> write;
+};
+
+/// Writes several files as `write_output()` does; either all files are written or, on an error,
+/// none (the standard output, which cannot be taken back, comes after every file).
+void write_outputs(const std::vector<Output_file>& outputs);
+
 // ---------------------------------------------------------------------------------------------
 // Distances
 
@@ -38,6 +49,21 @@ double farthest_finite(const std::vector<double>& distances);
 
 /// The colour ramp of the PLY output: blue at 0, red at `farthest`, grey where unreached.
 CGAL::IO::Color distance_color(double d, double farthest);
+
+// ---------------------------------------------------------------------------------------------
+// Nearest-source labels (the geodesic Voronoi cell of each point)
+
+/// One label per line, in the order of the file's points: the index of the nearest source in
+/// the order given, -1 where no source reaches.
+bool write_labels_txt(std::ostream& os, const std::vector<long>& labels);
+
+/// Binary PLY of the file's points and polygons: each point has its `distance` (double) and
+/// its nearest `source` (int, -1 where none reaches), and the colour of its cell.
+bool write_labels_ply(std::ostream& os, const Soup& soup, const std::vector<double>& distances,
+                      const std::vector<long>& labels);
+
+/// A colour per source index (hues far apart for neighbouring indices), grey for -1.
+CGAL::IO::Color label_color(long label);
 
 // ---------------------------------------------------------------------------------------------
 // Paths, from the source to the target

@@ -25,6 +25,7 @@ namespace {
 
 const double infinity = std::numeric_limits<double>::infinity();
 typedef Mesh::Property_map<Vertex_index, double> Distance_map;
+typedef Mesh::Property_map<Vertex_index, long> Label_map;
 
 #ifdef CGAL_LINKED_WITH_TBB
 typedef CGAL::Parallel_tag Parallel_tag;
@@ -166,11 +167,12 @@ void solve_with(const Mesh& mesh, Distance_map distance, const LibrarySources& s
 
 /// The one place that maps the algorithm choice to the library call.
 template <class LibrarySources>
-void solve(const Mesh_file& file, Distance_map distance, const LibrarySources& sources, const Solver_choice& choice,
-           CGAL_ext::Geodesic_statistics& stats)
+void solve(const Mesh_file& file, Distance_map distance, Label_map label, const LibrarySources& sources,
+           const Solver_choice& choice, CGAL_ext::Geodesic_statistics& stats)
 {
   const Mesh& mesh = file.mesh;
   const auto np = CGAL_ext::parameters::glued_vertices(file.glued_vertices)
+                    .vertex_source_map(label)
                     .max_distance(choice.max_distance)
                     .statistics(stats)
                     .batch_size(choice.batch_size)
@@ -233,17 +235,24 @@ int effective_threads(const Solver_choice& choice)
 }
 
 std::vector<double> compute_distances(Mesh_file& file, const std::vector<Surface_point>& sources,
-                                      const Solver_choice& choice, CGAL_ext::Geodesic_statistics& stats)
+                                      const Solver_choice& choice, CGAL_ext::Geodesic_statistics& stats,
+                                      std::vector<long>& nearest_source)
 {
   check_a_source_is_on_a_face(file, sources);
   Mesh& mesh = file.mesh;
   auto distance = mesh.add_property_map<Vertex_index, double>("v:distance", infinity).first;
+  auto label = mesh.add_property_map<Vertex_index, long>("v:nearest_source", -1).first;
   with_library_sources(file, sources, [&](const auto& library_sources) {
-    solve(file, distance, library_sources, choice, stats);
+    solve(file, distance, label, library_sources, choice, stats);
   });
   std::vector<double> distance_of_point;
-  for(Vertex_index v : file.vertex_of_point)
+  nearest_source.clear();
+  for(Vertex_index v : file.vertex_of_point) {
     distance_of_point.push_back(distance[v]);
+    nearest_source.push_back(label[v]);
+  }
+  mesh.remove_property_map(distance);
+  mesh.remove_property_map(label);
   return distance_of_point;
 }
 

@@ -20,11 +20,13 @@ namespace geodesic_tool {
 /// The number of threads a parallel solver runs on.
 int effective_threads(const Solver_choice& choice);
 
-/// Runs the library; returns the distance of each point of the file (merged points share theirs).
-/// Throws Tool_error when a face point's face is not a triangle of the mesh, or when every source
-/// is a vertex in no face.
+/// Runs the library; returns the distance of each point of the file (merged points share theirs)
+/// and fills `nearest_source` with the index of each point's nearest source (-1 where none
+/// reaches). Throws Tool_error when a face point's face is not a triangle of the mesh, or when
+/// every source is a vertex in no face.
 std::vector<double> compute_distances(Mesh_file& file, const std::vector<Surface_point>& sources,
-                                      const Solver_choice& choice, CGAL_ext::Geodesic_statistics& stats);
+                                      const Solver_choice& choice, CGAL_ext::Geodesic_statistics& stats,
+                                      std::vector<long>& nearest_source);
 
 /// A shortest path and what it took.
 struct Path_result

@@ -1,6 +1,7 @@
 // Parallel (PVTP) and approximate (AVTP, PAVTP) propagation: the same distances for every
 // thread count and batch size, exactness of PVTP, the limits and bounds of the approximation;
-// distance matrices, solved in parallel across sources.
+// nearest-source labels from every exact solver; distance matrices, solved in parallel across
+// sources.
 // This file is also built under ThreadSanitizer (test_parallel_tsan).
 #include "support/checks.h"
 #include "support/path_checks.h"
@@ -488,6 +489,126 @@ TEST(Parallel_for, sequential_solvers_run_inside_a_callers_parallel_loop)
   for(std::size_t i = 0; i < 8; ++i) {
     EXPECT_EQ(exact_runs[i], exact) << "run " << i;
     EXPECT_EQ(approximate_runs[i], approximate) << "run " << i;
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Nearest-source labels (vertex_source_map), from the same propagation as the distances
+
+/// The distances and nearest-source labels of one run of geodesic_distances.
+struct Labelled_run
+{
+  std::vector<double> distances;
+  std::vector<long> labels;
+};
+
+template <class ConcurrencyTag = CGAL::Sequential_tag, class Sources, class NamedParameters>
+Labelled_run solve_with_labels(const Mesh& m, const Sources& sources, const NamedParameters& np)
+{
+  auto labels = get(CGAL::dynamic_vertex_property_t<long>(), m);
+  for(Vertex v : vertices(m))
+    put(labels, v, -2);
+  Labelled_run run;
+  run.distances = solve<ConcurrencyTag>(m, sources, np.vertex_source_map(labels));
+  for(Vertex v : vertices(m))
+    run.labels.push_back(get(labels, v));
+  return run;
+}
+
+// The label of every vertex is a source at the vertex's distance: the argmin of the
+// single-source distances, ties aside; for every exact solver and thread count, and the same
+// labels for every thread count of one solver.
+TEST(Source_labels, every_exact_solver_labels_each_vertex_with_its_nearest_source)
+{
+  using CGAL_ext::parameters::algorithm;
+  for(const char* name : {"elephant", "mushroom"}) {
+    const Mesh& m = test_mesh(name);
+    const double diag = bbox_diagonal(m);
+    std::vector<Face_location> sources;
+    for(Vertex v : spread_vertices(m, 4, 5))
+      sources.push_back(corner_location(m, v));
+    sources.push_back(location(3, 0.2, 0.3));
+    sources.push_back(location(m.number_of_faces() / 2, 0.5, 0.25));
+    std::vector<std::vector<double>> single;
+    for(const Face_location& s : sources)
+      single.push_back(solve(m, std::vector<Face_location>{s}));
+
+    auto check = [&](const std::string& label, const Labelled_run& run) {
+      std::size_t decided = 0;
+      for(std::size_t v = 0; v < m.number_of_vertices(); ++v) {
+        double nearest = inf;
+        std::size_t argmin = 0;
+        for(std::size_t i = 0; i < sources.size(); ++i)
+          if(single[i][v] < nearest) {
+            nearest = single[i][v];
+            argmin = i;
+          }
+        ASSERT_GE(run.labels[v], 0) << label << ": vertex " << v << " has no label";
+        ASSERT_LT(std::size_t(run.labels[v]), sources.size()) << label << ": vertex " << v;
+        EXPECT_LE(single[std::size_t(run.labels[v])][v] - nearest, 1e-12 * diag) << label << ": vertex " << v;
+        EXPECT_NEAR(run.distances[v], nearest, 1e-12 * diag) << label << ": vertex " << v;
+        // where the nearest source is clearly nearest, the label is exactly it
+        bool clear = true;
+        for(std::size_t i = 0; i < sources.size(); ++i)
+          if(i != argmin && single[i][v] - nearest < 1e-9 * diag)
+            clear = false;
+        if(clear) {
+          ++decided;
+          EXPECT_EQ(std::size_t(run.labels[v]), argmin) << label << ": vertex " << v;
+        }
+      }
+      EXPECT_GT(decided, m.number_of_vertices() * 9 / 10) << label;
+    };
+    const std::string mesh(name);
+    check(mesh + " VTP", solve_with_labels(m, sources, CGAL_ext::parameters::default_values()));
+    check(mesh + " MMP", solve_with_labels(m, sources, algorithm(CGAL_ext::MMP)));
+    check(mesh + " FWP-MMP", solve_with_labels(m, sources, algorithm(CGAL_ext::FWP_MMP)));
+    std::vector<long> pvtp, pmmp;
+    for(int threads : {1, 2, 4}) {
+      const std::string t = " T=" + std::to_string(threads);
+      const Labelled_run p = solve_with_labels<CGAL::Parallel_tag>(m, sources, number_of_threads(threads));
+      check(mesh + " PVTP" + t, p);
+      const Labelled_run q =
+        solve_with_labels<CGAL::Parallel_tag>(m, sources, algorithm(CGAL_ext::FWP_MMP).number_of_threads(threads));
+      check(mesh + " PMMP" + t, q);
+      if(threads == 1) {
+        pvtp = p.labels;
+        pmmp = q.labels;
+      }
+      EXPECT_EQ(p.labels, pvtp) << mesh << " PVTP" << t << ": the same labels for every thread count";
+      EXPECT_EQ(q.labels, pmmp) << mesh << " PMMP" << t << ": the same labels for every thread count";
+    }
+  }
+}
+
+// Unreachable vertices (beyond max_distance, or in another component) get no_source: -1 in a
+// signed map, CGAL_ext::no_source in a std::size_t map; a duplicated source counts once (the
+// first one).
+TEST(Source_labels, unreachable_vertices_get_no_source_and_a_duplicate_source_the_first_index)
+{
+  using CGAL_ext::parameters::algorithm;
+  const Mesh& m = test_mesh("elephant");
+  const double radius = 0.2 * bbox_diagonal(m);
+  const std::vector<Vertex> sources{Vertex(0), Vertex(0), Vertex(100)};
+  for(CGAL_ext::Geodesic_algorithm a : {CGAL_ext::VTP, CGAL_ext::FWP_MMP}) {
+    const Labelled_run run = solve_with_labels(m, sources, algorithm(a).max_distance(radius));
+    auto unsigned_labels = get(CGAL::dynamic_vertex_property_t<std::size_t>(), m);
+    solve(m, sources, algorithm(a).max_distance(radius).vertex_source_map(unsigned_labels));
+    std::size_t unreached = 0;
+    for(Vertex v : vertices(m)) {
+      const std::size_t i = v.idx();
+      if(run.distances[i] == inf) {
+        ++unreached;
+        EXPECT_EQ(run.labels[i], -1) << "vertex " << i;
+        EXPECT_EQ(get(unsigned_labels, v), CGAL_ext::no_source) << "vertex " << i;
+      } else {
+        EXPECT_TRUE(run.labels[i] == 0 || run.labels[i] == 2) << "vertex " << i << ": label " << run.labels[i];
+        EXPECT_EQ(get(unsigned_labels, v), std::size_t(run.labels[i]));
+      }
+    }
+    EXPECT_GT(unreached, 0u);
+    EXPECT_EQ(run.labels[0], 0);
+    EXPECT_EQ(run.labels[100], 2);
   }
 }
 

@@ -940,6 +940,81 @@ TEST_F(Tool, several_sources_give_the_nearest_distance)
   expect_same_distances(distances(mesh + " --source 100,100"), a);
 }
 
+// --labels: the nearest source of every vertex, as text and as PLY with a `source` property and
+// a colour per cell; the label's single-source distance is the distance.
+TEST_F(Tool, labels_name_the_nearest_source_of_every_vertex)
+{
+  const std::string mesh = "distances '" + elephant + "'";
+  const std::vector<double> a = distances(mesh + " --source 100");
+  const std::vector<double> b = distances(mesh + " --source f:40:0.6:0.3:0.1");
+  const std::vector<double> c = distances(mesh + " --source 2000");
+  for(const char* algorithm : {"vtp", "pvtp --threads 2", "fwp-mmp", "pmmp --threads 2"}) {
+    const std::vector<double> all =
+      distances(mesh + " --source 100,f:40:0.6:0.3:0.1,2000 --labels l.txt --algorithm " + algorithm);
+    std::vector<long> labels;
+    for(const std::string& line : lines_of(read_text(path("l.txt"))))
+      labels.push_back(std::stol(line));
+    ASSERT_EQ(labels.size(), a.size()) << algorithm;
+    const double diagonal = *std::max_element(a.begin(), a.end()); // about the size of the mesh
+    std::size_t clear = 0;
+    for(std::size_t v = 0; v < a.size(); ++v) {
+      const double single[3] = {a[v], b[v], c[v]};
+      ASSERT_TRUE(labels[v] >= 0 && labels[v] <= 2) << algorithm << ": vertex " << v;
+      EXPECT_NEAR(single[labels[v]], all[v], 1e-12 * diagonal) << algorithm << ": vertex " << v;
+      const double second = std::min({single[(labels[v] + 1) % 3], single[(labels[v] + 2) % 3]});
+      clear += second - all[v] > 1e-9;
+    }
+    EXPECT_GT(clear, a.size() * 9 / 10) << algorithm;
+    EXPECT_EQ(labels[100], 0);
+    EXPECT_EQ(labels[2000], 2);
+  }
+
+  // PLY: distance and source per vertex, a colour per cell, the file's polygons
+  ASSERT_EQ(run(mesh + " --source 100,2000 --labels l.ply --output d.txt").exit_code, 0);
+  std::ifstream in(path("l.ply"), std::ios::binary);
+  Mesh ply;
+  ASSERT_TRUE(CGAL::IO::read_PLY(in, ply));
+  const auto [source, has_source] = ply.property_map<Vertex_index, int>("v:source");
+  ASSERT_TRUE(has_source) << "no vertex property 'source' in the PLY file";
+  const auto [color, has_color] = ply.property_map<Vertex_index, CGAL::IO::Color>("v:color");
+  ASSERT_TRUE(has_color);
+  EXPECT_EQ(ply.number_of_vertices(), a.size());
+  EXPECT_EQ(ply.number_of_faces(), 5558u);
+  std::size_t in_cell[2] = {0, 0};
+  for(Vertex_index v : ply.vertices()) {
+    ASSERT_TRUE(source[v] == 0 || source[v] == 1);
+    ++in_cell[source[v]];
+    EXPECT_EQ(color[v], tool::label_color(source[v]));
+  }
+  EXPECT_GT(in_cell[0], 100u);
+  EXPECT_GT(in_cell[1], 100u);
+  EXPECT_NE(tool::label_color(0), tool::label_color(1));
+  EXPECT_EQ(tool::label_color(-1), CGAL::IO::Color(128, 128, 128));
+}
+
+// Unreached vertices are labelled -1; a labels file that cannot be written leaves no file at all
+// (not the distances either); --labels must be .txt or .ply, and not the --output file.
+TEST_F(Tool, labels_of_unreached_vertices_and_bad_labels_files)
+{
+  const std::string mesh = "distances '" + elephant + "' --source 0";
+  const std::vector<double> d = distances(mesh + " --max-distance 0.2 --labels l.txt");
+  const std::vector<std::string> labels = lines_of(read_text(path("l.txt")));
+  ASSERT_EQ(labels.size(), d.size());
+  for(std::size_t v = 0; v < d.size(); ++v)
+    EXPECT_EQ(labels[v], std::isfinite(d[v]) ? "0" : "-1") << "vertex " << v;
+
+  fs::remove(path("d.txt"));
+  fs::remove(path("l.txt"));
+  expect_failed_write(mesh + " --output d.txt --labels l.txt", "l.txt");
+  fs::remove(path("l.txt"));
+  for(const std::string& bad : {std::string(" --labels l.obj"), std::string(" --labels d.txt --output d.txt")}) {
+    const Result r = run(mesh + bad);
+    EXPECT_NE(r.exit_code, 0) << bad;
+    EXPECT_EQ(r.err.rfind("error: ", 0), 0u) << r.err;
+    EXPECT_TRUE(files().empty()) << bad;
+  }
+}
+
 TEST_F(Tool, max_distance_leaves_far_vertices_at_infinity)
 {
   const std::vector<double> full = distances("distances '" + elephant + "' --source 0");

@@ -80,7 +80,7 @@ public:
   typedef std::pair<face_descriptor, Barycentric_coordinates> Face_location;
 
   /// What `nearest_source()` returns for a point that no source reaches.
-  static constexpr std::size_t no_source = std::size_t(-1);
+  static constexpr std::size_t no_source = CGAL_ext::no_source;
 
   /// A point of a path: where it lies on the mesh, and its position.
   struct Path_point
@@ -293,6 +293,14 @@ public:
   void vertex_distances(VertexDistanceMap vertex_distance_map) const
   {
     m_mesh.write_vertex_distances(vertex_distance_map, built().distances());
+  }
+  /// writes the index of the nearest source of every vertex (as `nearest_source()`; `no_source`,
+  /// converted to the map's value type, where no source reaches).
+  /// \param vertex_source_map a writable property map with `vertex_descriptor` keys and integer values
+  template <class VertexSourceMap>
+  void vertex_sources(VertexSourceMap vertex_source_map) const
+  {
+    m_mesh.write_vertex_sources(vertex_source_map, built().nearest_sources());
   }
 
   /// writes the points of the shortest path from the nearest source to `target`, the source

@@ -92,6 +92,18 @@ namespace CGAL_ext {
 ///     \cgalParamType{a range of `boost::graph_traits<TriangleMesh>::%vertex_descriptor`}
 ///     \cgalParamDefault{none: every vertex is settled}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_source_map}
+///     \cgalParamDescription{receives, for every vertex, the index of its nearest source in the order of
+///                           `sources` (the Voronoi cell the vertex lies in), from the same propagation as the
+///                           distances: the source of the path that gives the distance. Of duplicated sources
+///                           the first wins; between different sources at the same distance the choice is the
+///                           same for every number of threads. `CGAL_ext::no_source` (converted to the value
+///                           type: -1 for a signed type) where the distance is `+infinity`. With an
+///                           approximation the label is that of the approximate path}
+///     \cgalParamType{a model of `WritablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+///                    as key and an integer type as value}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{glued_vertices}
 ///     \cgalParamDescription{groups of vertices that are one point of the surface (the copies of a point that
 ///                           `polygon_soup_to_geodesic_mesh()` duplicated at a non-manifold vertex or edge): a
@@ -145,6 +157,8 @@ void geodesic_distances(const TriangleMesh& tm, VertexDistanceMap vertex_distanc
     internal::for_each_source(sources, [&](const auto& s) { paths.add_source(s); });
     paths.build(np);
     paths.vertex_distances(vertex_distance_map);
+    if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::vertex_source_map_t>::value)
+      paths.vertex_sources(parameters::get_parameter(np, internal_np::vertex_source_map));
     return;
   }
 
@@ -159,6 +173,8 @@ void geodesic_distances(const TriangleMesh& tm, VertexDistanceMap vertex_distanc
   const double seconds_setup = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   internal::run_solver<parallel>(solver, settings.number_of_threads);
   mesh.write_vertex_distances(vertex_distance_map, solver.distances());
+  if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::vertex_source_map_t>::value)
+    mesh.write_vertex_sources(parameters::get_parameter(np, internal_np::vertex_source_map), solver.nearest_sources());
   internal::report_statistics(settings, solver.statistics(), seconds_setup);
 }
 

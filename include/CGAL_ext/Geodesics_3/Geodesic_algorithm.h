@@ -3,7 +3,8 @@
 #define CGAL_EXT_GEODESICS_3_GEODESIC_ALGORITHM_H
 
 /// \file Geodesic_algorithm.h
-/// The solvers of the package, chosen with the named parameter `algorithm`, and their defaults.
+/// The solvers of the package, chosen with the named parameter `algorithm`, their defaults, and
+/// the index that means "no source".
 
 #include <cstddef>
 
@@ -34,6 +35,11 @@ constexpr std::size_t default_batch_size = 512;
 /// The default of the named parameter `batch_size` for PMMP: how many windows are selected and
 /// propagated together at most (the thesis's K; its running time stops changing beyond 1000).
 constexpr std::size_t default_window_batch_size = 1024;
+
+/// \ingroup PkgGeodesics3Ref
+/// The nearest-source index of a vertex or point that no source reaches (as written to a
+/// `vertex_source_map`, converted to its value type: -1 for a signed integer type).
+constexpr std::size_t no_source = std::size_t(-1);
 
 } // namespace CGAL_ext
 

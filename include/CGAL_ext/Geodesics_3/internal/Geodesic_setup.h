@@ -161,6 +161,15 @@ public:
     for(std::size_t i = 0; i < m_vertex_of_index.size(); ++i)
       put(map, m_vertex_of_index[i], distances[i] * unit);
   }
+  /// Writes the nearest source of every vertex (-1 in `nearest`) as the map's value type, with
+  /// `no_source` for -1.
+  template <class VertexSourceMap>
+  void write_vertex_sources(VertexSourceMap map, const std::vector<int>& nearest) const
+  {
+    typedef typename boost::property_traits<VertexSourceMap>::value_type Index;
+    for(std::size_t i = 0; i < m_vertex_of_index.size(); ++i)
+      put(map, m_vertex_of_index[i], nearest[i] < 0 ? static_cast<Index>(no_source) : static_cast<Index>(nearest[i]));
+  }
   /// A length or coordinate in the cache's unit, in the mesh's.
   double to_mesh_unit(double d) const { return d * m_cache->unit; }
 

@@ -65,7 +65,6 @@ public:
   /// `parallel` (PMMP), `run()` works on the threads of the task arena it is called in.
   MMP_solver(const Mesh_cache& mesh, const Solver_settings& settings, bool parallel)
     : Solver_base(mesh, settings, parallel)
-    , m_nearest_source(mesh.number_of_vertices, -1)
     , m_emits_when_taken(mesh.is_pseudo_source)
     , m_windows(mesh, m_min_window_length)
     , m_use_heap(!parallel && settings.algorithm == MMP)
@@ -97,8 +96,6 @@ public:
 
   // ---- what the queries read (all const, and never written after run()) ----
 
-  /// The nearest source of each vertex, -1 where none reaches.
-  const std::vector<int>& nearest_sources() const { return m_nearest_source; }
   /// The windows kept on the edges.
   const Edge_window_store& windows() const { return m_windows; }
 
@@ -467,7 +464,6 @@ private:
     note_live_windows(m_windows);
   }
 
-  std::vector<int> m_nearest_source;
   std::vector<std::uint8_t> m_emits_when_taken; // pseudo-source or source
   Edge_window_store m_windows;
   std::size_t m_main_slot = 0; // the pool slot of the thread running run()

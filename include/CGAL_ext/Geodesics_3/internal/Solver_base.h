@@ -19,8 +19,8 @@ namespace CGAL_ext {
 namespace Geodesics_3 {
 namespace internal {
 
-/// What the VTP and MMP solvers share: the mesh, the sources, the vertex distances, the
-/// settings, the trimming of a window by its edge's end vertices, and the statistics.
+/// What the VTP and MMP solvers share: the mesh, the sources, the vertex distances and
+/// nearest sources, the settings, the trimming of a window by its edge's end vertices, and the statistics.
 class Solver_base
 {
 public:
@@ -34,6 +34,9 @@ public:
   const std::vector<Source_point>& sources() const { return m_sources; }
   /// The distance of every vertex (+infinity where no source reaches), in the cache's unit.
   const std::vector<double>& distances() const { return m_distance; }
+  /// The index of the nearest source of every vertex (the source whose path set its distance),
+  /// -1 where no source reaches.
+  const std::vector<int>& nearest_sources() const { return m_nearest_source; }
   /// In the cache's unit.
   double max_distance() const { return m_max_distance; }
   const Geodesic_statistics& statistics() const { return m_statistics; }
@@ -46,6 +49,7 @@ protected:
   Solver_base(const Mesh_cache& mesh, const Solver_settings& settings, bool parallel)
     : m_mesh(mesh)
     , m_distance(mesh.number_of_vertices, infinity())
+    , m_nearest_source(mesh.number_of_vertices, -1)
     , m_emitted(mesh.number_of_vertices, infinity())
     , m_max_distance(settings.max_distance / mesh.unit)
     , m_window_limit(settings.max_distance / mesh.unit)
@@ -101,6 +105,7 @@ protected:
   const Mesh_cache& m_mesh;
   std::vector<Source_point> m_sources;
   std::vector<double> m_distance;
+  std::vector<int> m_nearest_source;
   std::vector<double> m_emitted; // sigma of the last windows a pseudo-source emitted
   const double m_max_distance;
   double m_window_limit;         // windows whose smallest distance is beyond it are dropped

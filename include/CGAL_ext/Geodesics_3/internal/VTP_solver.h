@@ -26,8 +26,9 @@ namespace internal {
 struct List_task
 {
   int halfedge = -1;
-  Window* input = nullptr;  // the list's windows, detached from it
+  Listed_window* input = nullptr; // the list's windows, detached from it
   double apex_distance = 0; // shortest path to the apex found through the list
+  int apex_source = -1;     // the source of that path
   std::vector<Window> windows;  // the input, trimmed and pruned
   Window_chain to_ac, to_cb;    // children for the lists across A->C and C->B
 };
@@ -60,7 +61,7 @@ struct List_task
 class VTP_solver : public Solver_base
 {
 public:
-  typedef Object_pool<Window> Window_pool;
+  typedef Object_pool<Listed_window> Window_pool;
 
   /// The guard band of the approximation, in mean edge lengths (thesis 4.3.2, lambda_g).
   static constexpr double approximation_guard = 8.;
@@ -106,11 +107,12 @@ public:
     check_has_sources(m_mesh, m_sources);
     m_main_slot = m_pool.use_one_slot_per_thread(m_parallel);
     for(const Source_point& s : m_sources) {
+      const int index = int(&s - m_sources.data());
       if(s.vertex >= 0) {
         m_emits_when_taken[s.vertex] = 1;
-        relax(s.vertex, 0.);
+        relax(s.vertex, 0., index);
       } else {
-        emit_from_face_point(s);
+        emit_from_face_point(s, index);
       }
     }
     m_next_reset = m_reset_step;
@@ -124,9 +126,11 @@ public:
     update_stop_limit();
     const double l = limit();
     if(l < infinity())
-      for(double& d : m_distance)
-        if(d > l)
-          d = infinity();
+      for(std::size_t v = 0; v < m_distance.size(); ++v)
+        if(m_distance[v] > l) {
+          m_distance[v] = infinity();
+          m_nearest_source[v] = -1;
+        }
     finish_statistics(m_pool, start);
   }
 
@@ -147,15 +151,16 @@ private:
     m_stop_limit = farthest;
   }
 
-  void relax(int v, double d)
+  void relax(int v, double d, int source)
   {
     if(d < m_distance[v])
-      m_mesh.for_each_copy_of_point(v, [&](int u) { set_distance(u, d); });
+      m_mesh.for_each_copy_of_point(v, [&](int u) { set_distance(u, d, source); });
   }
 
-  void set_distance(int v, double d)
+  void set_distance(int v, double d, int source)
   {
     m_distance[v] = d;
+    m_nearest_source[v] = source;
     if(!m_is_taken[v] || m_emits_when_taken[v]) {
       if(m_batched)
         m_buckets.push(d, v);
@@ -253,12 +258,12 @@ private:
     }
   }
 
-  void insert_window(int h, const Window_geometry& geometry)
+  void insert_window(int h, const Window_geometry& geometry, int source)
   {
-    Window w = list_window(geometry);
+    Window w = list_window(geometry, source);
     if(keep_window(w, h, m_distance[m_mesh.source(h)], m_distance[m_mesh.target(h)])) {
       Window_chain chain;
-      chain.push_back(m_pool.allocate(m_main_slot, w));
+      chain.push_back(m_pool.allocate(m_main_slot, Listed_window{w, nullptr}));
       add_chain(h, chain);
       note_live_windows(m_pool);
     }
@@ -269,17 +274,20 @@ private:
   void emit_from_vertex(int v)
   {
     const double sigma = m_distance[v];
+    const int source = m_nearest_source[v];
     m_emitted[v] = sigma;
     m_window_limit = limit();
     emit_vertex_windows(
-      m_mesh, v, sigma, [&](int u, double d) { relax(u, d); }, [&](int g, const Window_geometry& w) { insert_window(g, w); });
+      m_mesh, v, sigma, [&](int u, double d) { relax(u, d, source); },
+      [&](int g, const Window_geometry& w) { insert_window(g, w, source); });
   }
 
-  void emit_from_face_point(const Source_point& s)
+  void emit_from_face_point(const Source_point& s, int source)
   {
     m_window_limit = limit();
     emit_face_point_windows(
-      m_mesh, s, [&](int u, double d) { relax(u, d); }, [&](int g, const Window_geometry& w) { insert_window(g, w); });
+      m_mesh, s, [&](int u, double d) { relax(u, d, source); },
+      [&](int g, const Window_geometry& w) { insert_window(g, w, source); });
   }
 
   void take_vertex(int v)
@@ -422,13 +430,14 @@ private:
     task.to_ac.clear();
     task.to_cb.clear();
     task.apex_distance = infinity();
+    task.apex_source = -1;
     windows.clear();
     const Halfedge_frame& f = m_mesh.frame[h];
     const double d_from = m_distance[m_mesh.source(h)];
     const double d_to = m_distance[m_mesh.target(h)];
-    for(Window* p = task.input; p;) {
-      Window* next = p->next;
-      windows.push_back(*p);
+    for(Listed_window* p = task.input; p;) {
+      Listed_window* next = p->next;
+      windows.push_back(p->window);
       if(!keep_window(windows.back(), h, d_from, d_to))
         windows.pop_back();
       m_pool.release_one(slot, p);
@@ -447,6 +456,7 @@ private:
       if(d < best) {
         best = d;
         split = p;
+        task.apex_source = w.source;
       }
     }
     task.apex_distance = best;
@@ -457,10 +467,10 @@ private:
       const double crossing = apex_crossing(w, f.apex_x, f.apex_y);
       make_children(w, across, std::min(split, crossing), std::max(split, crossing), m_min_window_length,
                     [&](int g, const Window_geometry& geometry, bool onto_ac) {
-                      Window child = list_window(geometry);
+                      Window child = list_window(geometry, w.source);
                       // A -> C runs from the source of h to the apex, C -> B from the apex to the target
                       if(onto_ac ? keep_window(child, g, d_from, d_apex) : keep_window(child, g, d_apex, d_to))
-                        (onto_ac ? task.to_ac : task.to_cb).push_back(m_pool.allocate(slot, child));
+                        (onto_ac ? task.to_ac : task.to_cb).push_back(m_pool.allocate(slot, Listed_window{child, nullptr}));
                     });
     }
   }
@@ -471,7 +481,7 @@ private:
     ++m_statistics.lists_propagated;
     const int h = task.halfedge;
     if(task.apex_distance < infinity())
-      relax(m_mesh.apex(h), task.apex_distance);
+      relax(m_mesh.apex(h), task.apex_distance, task.apex_source);
     if(task.to_ac.size)
       add_chain(m_mesh.opposite(Mesh_cache::prev(h)), task.to_ac);
     if(task.to_cb.size)
@@ -510,7 +520,7 @@ private:
   std::vector<std::uint8_t> m_is_taken;
   std::vector<std::uint8_t> m_emits_when_taken; // pseudo-source, source, or made a source by a reset
   std::vector<std::uint8_t> m_is_stop;
-  std::vector<Window*> m_head; // the list of each half-edge
+  std::vector<Listed_window*> m_head; // the list of each half-edge
   std::vector<std::uint8_t> m_is_scheduled; // per half-edge: its list is in m_scheduled_lists
   std::vector<std::uint8_t> m_is_waiting;   // per half-edge: its list is in m_waiting_lists
   std::vector<int> m_waiting_lists;   // lists holding windows outside the swept region

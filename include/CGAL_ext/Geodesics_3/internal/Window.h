@@ -30,15 +30,23 @@ struct Window_geometry
 
 /// A window of a list (VTP keeps its windows in lists per half-edge), with the distances at
 /// the ends of its interval, kept equal to `distance_at(b0)` and `distance_at(b1)` so that
-/// trimming and clipping reuse them: 64 bytes, the size of a cache line. (Not `alignas(64)`:
-/// the lists' windows are sorted by value, and GCC notes at every such call that passing
+/// trimming and clipping reuse them, and the index of the source its paths come from: 64 bytes,
+/// the size of a cache line, which the hot loops (sorting and clipping a list) work on. (Not
+/// `alignas(64)`: lists are sorted by value, and GCC notes at every such call that passing
 /// over-aligned values changed ABI.)
 struct Window : Window_geometry
 {
   double d0, d1;
-  Window* next; // next window of the same list
+  std::int64_t source; // (64 bits: a padded struct is copied field by field)
 };
 static_assert(sizeof(Window) == 64, "a list window is one cache line");
+
+/// A window as a list holds it, linked to the next window of the list.
+struct Listed_window
+{
+  Window window;
+  Listed_window* next;
+};
 
 /// Planar length of (x, y). std::hypot guards against overflow at a large cost; coordinates of
 /// a mesh are far from that range.
@@ -46,14 +54,14 @@ inline double norm2d(double x, double y) { return std::sqrt(x * x + y * y); }
 
 inline double distance_at(const Window_geometry& w, double x) { return w.sigma + norm2d(x - w.sx, w.sy); }
 
-/// A list window of `g`, its end distances computed.
-inline Window list_window(const Window_geometry& g)
+/// A list window of `g`, its end distances computed, its paths from source `source`.
+inline Window list_window(const Window_geometry& g, int source)
 {
   Window w;
   static_cast<Window_geometry&>(w) = g;
   w.d0 = distance_at(g, g.b0);
   w.d1 = distance_at(g, g.b1);
-  w.next = nullptr;
+  w.source = source;
   return w;
 }
 
@@ -368,12 +376,12 @@ void make_children(const Window_geometry& w, const Face_crossing& c, double ac_e
 /// Windows linked through `next`, with their last one and their number.
 struct Window_chain
 {
-  Window* head = nullptr;
-  Window* tail = nullptr;
+  Listed_window* head = nullptr;
+  Listed_window* tail = nullptr;
   std::size_t size = 0;
 
   void clear() { head = tail = nullptr, size = 0; }
-  void push_back(Window* w)
+  void push_back(Listed_window* w)
   {
     w->next = nullptr;
     (tail ? tail->next : head) = w;

@@ -4,6 +4,7 @@
 // `statistics` is not listed: it takes its argument by reference and is written by hand.
 CGAL_ext_add_named_parameter(max_distance_t, max_distance, max_distance)
 CGAL_ext_add_named_parameter(stop_vertices_t, stop_vertices, stop_vertices)
+CGAL_ext_add_named_parameter(vertex_source_map_t, vertex_source_map, vertex_source_map)
 CGAL_ext_add_named_parameter(approximation_t, approximation, approximation)
 CGAL_ext_add_named_parameter(number_of_threads_t, number_of_threads, number_of_threads)
 CGAL_ext_add_named_parameter(batch_size_t, batch_size, batch_size)
