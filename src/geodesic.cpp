@@ -3,11 +3,13 @@
 //
 //   geodesic distances MESH --source S[,S...] [--algorithm vtp|pvtp|avtp|pavtp|mmp|fwp-mmp|pmmp]
 //                      [--lambda L] [--threads N] [--batch-size K] [--max-distance D]
-//                      [--output FILE.txt|FILE.ply] [--stats]
+//                      [--output FILE.txt|FILE.ply] [--labels FILE.txt|FILE.ply] [--stats]
 //   geodesic path MESH --source S[,S...] --target T [--algorithm fwp-mmp|mmp|pmmp] [--threads N]
 //                 [--batch-size K] [--max-distance D] [--output FILE.txt|FILE.obj|FILE.ply] [--stats]
 //   geodesic matrix MESH (--source S[,S...] | --all) [--target T[,T...]|sources] [--max-distance D]
 //                   [--threads N] --output FILE.npy|FILE.mtx|FILE.txt [--stats]
+//   geodesic sample MESH (--count N | --radius R) [--first V] [--algorithm vtp|pvtp|avtp|pavtp]
+//                   [--threads N] [--output FILE.txt] [--labels FILE.txt|FILE.ply] [--stats]
 //
 // MESH is an OFF, OBJ, PLY or STL file: triangles, quads, polygons, soups and non-manifold meshes
 // are made into the triangle mesh the library takes (CGAL_ext::polygon_soup_to_geodesic_mesh),
@@ -26,6 +28,7 @@
 #include "tool_mesh.h"
 #include "tool_options.h"
 #include "tool_output.h"
+#include "tool_sample.h"
 #include "tool_solvers.h"
 #include "tool_stats.h"
 #include "tool_text.h"
@@ -171,6 +174,8 @@ int main(int argc, char** argv)
   add_path_command(app, path);
   Matrix_options matrix;
   add_matrix_command(app, matrix);
+  Sample_options sample;
+  add_sample_command(app, sample);
 
   try {
     app.parse(argc, argv);
@@ -194,6 +199,8 @@ int main(int argc, char** argv)
       return run_path(path);
     if(app.got_subcommand("matrix"))
       return run_matrix(matrix);
+    if(app.got_subcommand("sample"))
+      return run_sample(sample);
   } catch(const std::exception& e) { // Tool_error, and the library's Geodesic_error
     std::cerr << "error: " << e.what() << std::endl;
   }

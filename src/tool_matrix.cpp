@@ -12,7 +12,6 @@
 
 #include <CLI/CLI.hpp>
 
-#include <unistd.h>
 
 #include <chrono>
 #include <cmath>
@@ -183,10 +182,7 @@ int run_matrix(const Matrix_options& options)
     check_surface_point_range(s, file.soup.points.size(), file.soup.polygons.size());
   const std::vector<std::size_t> columns = target_columns(options, sources, file.soup.points.size());
 
-  // A progress line, on a terminal, for runs longer than a second.
-  const bool show_progress = ::isatty(2);
-  const auto start = std::chrono::steady_clock::now();
-  auto last_shown = start;
+  Progress_line progress;
   std::size_t entries = 0;
   const Stopwatch solve_watch;
   write_output(options.output, [&](std::ostream& os) {
@@ -199,15 +195,9 @@ int run_matrix(const Matrix_options& options)
                               entries += std::isfinite(selected[j]);
                             }
                             writer.add_row(selected);
-                            const auto now = std::chrono::steady_clock::now();
-                            if(show_progress && now - start > std::chrono::seconds(1) &&
-                               now - last_shown > std::chrono::milliseconds(500)) {
-                              std::cerr << "\rrow " << i + 1 << " of " << sources.size() << std::flush;
-                              last_shown = now;
-                            }
+                            progress.show("row", i + 1, sources.size());
                           });
-    if(show_progress && last_shown != start)
-      std::cerr << "\r" << std::string(40, ' ') << "\r" << std::flush;
+    progress.clear();
     return writer.finish();
   });
 

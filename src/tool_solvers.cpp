@@ -7,6 +7,7 @@
 #include "tool_text.h"
 
 #include <CGAL_ext/Surface_mesh_geodesic_paths.h>
+#include <CGAL_ext/farthest_point_sampling.h>
 #include <CGAL_ext/geodesic_distance_matrix.h>
 #include <CGAL_ext/geodesic_distances.h>
 
@@ -14,6 +15,8 @@
 #include <tbb/global_control.h>
 #include <tbb/task_arena.h>
 #endif
+
+#include <boost/iterator/function_output_iterator.hpp>
 
 #include <algorithm>
 #include <iterator>
@@ -153,16 +156,25 @@ void with_library_sources(const Mesh_file& file, const std::vector<Surface_point
   }
 }
 
-/// The library call for one concurrency tag; `approximation` is a named parameter that is
-/// either present or absent, so it is chosen here rather than given a neutral value.
-template <class ConcurrencyTag, class LibrarySources, class NamedParameters>
-void solve_with(const Mesh& mesh, Distance_map distance, const LibrarySources& sources,
-                const Solver_choice& choice, const NamedParameters& np)
+/// Calls `f(tag, np)` with the concurrency tag of `choice` and its parameters added to `np`:
+/// the threads, and `approximation`, a named parameter that is either present or absent (so it
+/// is chosen here rather than given a neutral value).
+template <class NamedParameters, class Function>
+void with_solver(const Solver_choice& choice, const NamedParameters& np, Function f)
 {
-  if(choice.algorithm->approximate)
-    CGAL_ext::geodesic_distances<ConcurrencyTag>(mesh, distance, sources, np.approximation(choice.lambda));
-  else
-    CGAL_ext::geodesic_distances<ConcurrencyTag>(mesh, distance, sources, np);
+  const auto with_approximation = [&](auto tag, const auto& p) {
+    if(choice.algorithm->approximate)
+      f(tag, p.approximation(choice.lambda));
+    else
+      f(tag, p);
+  };
+  const auto batched = np.batch_size(choice.batch_size);
+  if(choice.algorithm->parallel) {
+    const Thread_allowance allowance(choice.threads);
+    with_approximation(Parallel_tag(), batched.number_of_threads(choice.threads));
+  } else {
+    with_approximation(CGAL::Sequential_tag(), batched);
+  }
 }
 
 /// The one place that maps the algorithm choice to the library call.
@@ -170,19 +182,14 @@ template <class LibrarySources>
 void solve(const Mesh_file& file, Distance_map distance, Label_map label, const LibrarySources& sources,
            const Solver_choice& choice, CGAL_ext::Geodesic_statistics& stats)
 {
-  const Mesh& mesh = file.mesh;
   const auto np = CGAL_ext::parameters::glued_vertices(file.glued_vertices)
                     .vertex_source_map(label)
                     .max_distance(choice.max_distance)
                     .statistics(stats)
-                    .batch_size(choice.batch_size)
                     .algorithm(choice.algorithm->library);
-  if(choice.algorithm->parallel) {
-    const Thread_allowance allowance(choice.threads);
-    solve_with<Parallel_tag>(mesh, distance, sources, choice, np.number_of_threads(choice.threads));
-  } else {
-    solve_with<CGAL::Sequential_tag>(mesh, distance, sources, choice, np);
-  }
+  with_solver(choice, np, [&](auto tag, const auto& p) {
+    CGAL_ext::geodesic_distances<decltype(tag)>(file.mesh, distance, sources, p);
+  });
 }
 
 template <class ConcurrencyTag>
@@ -280,6 +287,65 @@ void compute_distance_rows(const Mesh_file& file, const std::vector<Surface_poin
   with_library_sources(file, sources, [&](const auto& library_sources) {
     CGAL_ext::geodesic_distance_rows<Parallel_tag>(file.mesh, library_sources, to_file_order, np);
   });
+}
+
+std::vector<std::size_t> point_of_vertex(const Mesh_file& file)
+{
+  const std::size_t none = std::size_t(-1);
+  std::vector<std::size_t> point(file.mesh.number_of_vertices(), none);
+  for(std::size_t p = file.vertex_of_point.size(); p-- > 0;)
+    point[file.vertex_of_point[p].idx()] = p;
+  // the copies the repair made of a point: that point
+  for(const std::vector<Vertex_index>& group : file.glued_vertices) {
+    std::size_t p = none;
+    for(Vertex_index v : group)
+      p = std::min(p, point[v.idx()]);
+    for(Vertex_index v : group)
+      if(point[v.idx()] == none)
+        point[v.idx()] = p;
+  }
+  return point;
+}
+
+Sampling_result compute_samples(const Mesh_file& file, const Sampling_request& request, const Solver_choice& choice)
+{
+  const std::vector<std::size_t> point = point_of_vertex(file);
+  Sampling_result result;
+  Progress_line progress;
+  auto on_sample = boost::make_function_output_iterator([&](Vertex_index v) {
+    result.samples.push_back(point[v.idx()]);
+    progress.show("sample", result.samples.size(), request.count);
+  });
+  const Mesh& mesh = file.mesh;
+  auto distance = get(CGAL::dynamic_vertex_property_t<double>(), mesh);
+  auto label = get(CGAL::dynamic_vertex_property_t<long>(), mesh);
+  const auto np = CGAL_ext::parameters::glued_vertices(file.glued_vertices)
+                    .vertex_distance_map(distance)
+                    .vertex_source_map(label)
+                    .covering_radius_output_iterator(std::back_inserter(result.radii))
+                    .statistics(result.stats);
+  const auto sample = [&](const auto& first_and_radius) {
+    with_solver(choice, first_and_radius, [&](auto tag, const auto& p) {
+      CGAL_ext::farthest_point_sampling<decltype(tag)>(mesh, request.count, on_sample, p);
+    });
+  };
+  // `first_sample` and `covering_radius` are present or absent
+  const auto with_radius = [&](const auto& p) {
+    if(request.radius > 0)
+      sample(p.covering_radius(request.radius));
+    else
+      sample(p);
+  };
+  if(request.first)
+    with_radius(np.first_sample(file.vertex_of_point[*request.first]));
+  else
+    with_radius(np);
+  progress.clear();
+  for(Vertex_index v : file.vertex_of_point) {
+    result.distances.push_back(get(distance, v));
+    result.labels.push_back(get(label, v));
+  }
+  return result;
 }
 
 } // namespace geodesic_tool

@@ -13,6 +13,7 @@
 #include <cstddef>
 #include <functional>
 #include <limits>
+#include <optional>
 #include <vector>
 
 namespace geodesic_tool {
@@ -49,6 +50,32 @@ Path_result trace_path(const Mesh_file& file, const std::vector<Surface_point>& 
 /// `threads` threads (0: all cores).
 void compute_distance_rows(const Mesh_file& file, const std::vector<Surface_point>& sources, double max_distance,
                            int threads, const std::function<void(std::size_t, const std::vector<double>&)>& row);
+
+/// The point of the file of each vertex of the mesh (of merged points the first; a copy the
+/// repair made of a point: that point).
+std::vector<std::size_t> point_of_vertex(const Mesh_file& file);
+
+/// What `geodesic sample` asks for.
+struct Sampling_request
+{
+  std::size_t count = 0;            // at most this many samples, at least 1
+  double radius = 0;                // stop once every vertex is this close to a sample; 0: none
+  std::optional<std::size_t> first; // the first sample, a point of the file
+};
+
+/// Farthest-point samples, as points of the file, with the covering radius after each, and the
+/// distance and nearest sample of each point of the file.
+struct Sampling_result
+{
+  std::vector<std::size_t> samples;
+  std::vector<double> radii;
+  std::vector<double> distances;
+  std::vector<long> labels;
+  CGAL_ext::Geodesic_statistics stats;
+};
+
+/// Runs the library's farthest_point_sampling (the VTP family of `choice`), with a progress line.
+Sampling_result compute_samples(const Mesh_file& file, const Sampling_request& request, const Solver_choice& choice);
 
 } // namespace geodesic_tool
 

@@ -6,8 +6,30 @@
 #include "tool_text.h"
 
 #include <sys/resource.h>
+#include <unistd.h>
+
+#include <iostream>
+#include <string>
 
 namespace geodesic_tool {
+
+Progress_line::Progress_line() : m_on_terminal(::isatty(2)) {}
+
+void Progress_line::show(const char* what, std::size_t done, std::size_t total)
+{
+  const Clock::time_point now = Clock::now();
+  if(m_on_terminal && now - m_start > std::chrono::seconds(1) && now - m_last_shown > std::chrono::milliseconds(500)) {
+    std::cerr << "\r" << what << " " << done << " of " << total << std::flush;
+    m_last_shown = now;
+  }
+}
+
+void Progress_line::clear()
+{
+  if(m_last_shown != m_start)
+    std::cerr << "\r" << std::string(40, ' ') << "\r" << std::flush;
+  m_last_shown = m_start;
+}
 
 double peak_rss_mb()
 {

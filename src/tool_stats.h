@@ -25,6 +25,21 @@ private:
   Clock::time_point m_start = Clock::now();
 };
 
+/// A progress line on the standard error, `what done of total`, shown only on a terminal, once
+/// the run has taken more than a second, and at most twice a second; `clear()` erases it.
+class Progress_line
+{
+public:
+  Progress_line();
+  void show(const char* what, std::size_t done, std::size_t total);
+  void clear();
+
+private:
+  typedef std::chrono::steady_clock Clock;
+  bool m_on_terminal;
+  Clock::time_point m_start = Clock::now(), m_last_shown = m_start;
+};
+
 /// The peak resident memory of the process so far, in MiB.
 double peak_rss_mb();
 

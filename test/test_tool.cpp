@@ -1616,10 +1616,13 @@ const std::vector<std::pair<std::string, std::string>> bad_files = {
   {"isolated.off", "OFF\n4 1 0\n" + triangle_points + "5 5 5\n3 0 1 2\n"},
   // two triangles that share nothing: two connected components
   {"two.off", "OFF\n6 2 0\n" + triangle_points + "10 0 0\n11 0 0\n10 1 0\n3 0 1 2\n3 3 4 5\n"},
+  // a unit square and point 4 = point 2, joined by a zero-length edge: 5 vertices, 4 distinct points
+  {"needle.off", "OFF\n5 3 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n1 1 0\n3 0 1 2\n3 0 2 3\n3 1 4 2\n"},
 };
 
 const std::string E = "distances '" + elephant + "'";
 const std::string P = "path '" + elephant + "'";
+const std::string S = "sample '" + elephant + "'";
 
 const Bad_case bad_cases[] = {
   {"face_point_on_a_quad", "distances quad.off --source f:0:0.2:0.3:0.5", "d.txt",
@@ -1729,6 +1732,19 @@ const Bad_case bad_cases[] = {
   {"path_nan_coordinate", "path nan.ply --source 0 --target 1", "p.ply", "point 2 has a non-finite coordinate"},
   {"path_degenerate_triangle", "path flat.off --source 0 --target 1", "p.txt", "degenerate"},
   {"path_missing_file", "path missing.off --source 0 --target 1", "p.txt", "cannot read mesh 'missing.off'"},
+  {"labels_obj", E + " --source 0 --labels l.obj", "d.txt", "unknown output format 'l.obj'"},
+  {"labels_same_file", E + " --source 0 --labels d.txt", "d.txt", "--output and --labels name the same file 'd.txt'"},
+  {"sample_no_count", S, "s.txt", "give --count, --radius, or both"},
+  {"sample_count_zero", S + " --count 0", "s.txt", "--count must be at least 1, got 0"},
+  {"sample_count_above_vertices", S + " --count 2776", "s.txt", "--count 2776 is more than the 2775 vertices"},
+  {"sample_radius_zero", S + " --radius 0", "s.txt", "--radius must be positive, got 0"},
+  {"sample_first_out_of_range", S + " --count 3 --first 2775", "s.txt", "first sample '2775'"},
+  {"sample_first_face_point", S + " --count 3 --first f:1:0.2:0.3:0.5", "s.txt", "give a vertex id"},
+  {"sample_with_mmp", S + " --count 3 --algorithm fwp-mmp", "s.txt", "sampling runs vtp, pvtp, avtp or pavtp"},
+  {"sample_ply_output", S + " --count 3", "s.ply", "the samples are written as .txt"},
+  {"sample_labels_same_file", S + " --count 3 --labels s.txt", "s.txt", "name the same file 's.txt'"},
+  {"sample_more_than_distinct", "sample needle.off --count 5", "s.txt", "after 4 every vertex is a sample or at distance 0"},
+  {"sample_point_cloud", "sample no_faces.off --count 1", "s.txt", "a point cloud"},
 };
 
 class Bad_input : public Tool, public ::testing::WithParamInterface<Bad_case>
@@ -1781,6 +1797,58 @@ TEST_F(Tool, a_good_triangle_works)
   EXPECT_NEAR(d[0], std::sqrt(0.5), 1e-15);
   EXPECT_NEAR(d[1], std::sqrt(0.5), 1e-15);
   EXPECT_NEAR(d[2], std::sqrt(0.5), 1e-15);
+}
+
+// ---------------------------------------------------------------------------------------------
+// geodesic sample
+
+/// The lines `id radius` of a samples file.
+std::vector<std::pair<std::size_t, double>> parse_samples(const std::string& text)
+{
+  std::vector<std::pair<std::size_t, double>> samples;
+  for(const std::string& line : lines_of(text)) {
+    std::istringstream in(line);
+    std::pair<std::size_t, double> s;
+    std::string radius;
+    in >> s.first >> radius;
+    s.second = std::stod(radius);
+    samples.push_back(s);
+  }
+  return samples;
+}
+
+// Each sample is the vertex farthest from those before it (checked with the tool's own
+// distances), the radius after it is the largest distance left; --radius stops there; --labels
+// gives each vertex its nearest sample.
+TEST_F(Tool, sample_gives_the_farthest_vertices_and_their_radii)
+{
+  const auto samples = parse_samples(output_of("sample '" + elephant + "' --count 6", "s.txt"));
+  ASSERT_EQ(samples.size(), 6u);
+  const std::vector<double> from_0 = distances("distances '" + elephant + "' --source 0");
+  EXPECT_EQ(from_0[samples[0].first], *std::max_element(from_0.begin(), from_0.end()));
+  std::string so_far;
+  for(std::size_t k = 0; k < samples.size(); ++k) {
+    so_far += (k ? "," : "") + std::to_string(samples[k].first);
+    const std::vector<double> d = distances("distances '" + elephant + "' --source " + so_far);
+    const double farthest = *std::max_element(d.begin(), d.end());
+    EXPECT_NEAR(samples[k].second, farthest, 1e-12 * farthest) << "radius after sample " << k;
+    if(k + 1 < samples.size())
+      EXPECT_NEAR(d[samples[k + 1].first], farthest, 1e-12 * farthest) << "sample " << k + 1;
+  }
+
+  // --first, --radius, --labels, in parallel
+  const auto from_7 =
+    parse_samples(output_of("sample '" + elephant + "' --first 7 --radius " + tool::number_text(samples[3].second) +
+                              " --count 100 --algorithm pvtp --threads 2 --labels l.txt",
+                            "s.txt"));
+  ASSERT_GE(from_7.size(), 2u);
+  EXPECT_EQ(from_7[0].first, 7u);
+  EXPECT_LE(from_7.back().second, samples[3].second);
+  EXPECT_GT(from_7[from_7.size() - 2].second, samples[3].second);
+  const std::vector<std::string> labels = lines_of(read_text(path("l.txt")));
+  ASSERT_EQ(labels.size(), 2775u);
+  for(std::size_t k = 0; k < from_7.size(); ++k)
+    EXPECT_EQ(labels[from_7[k].first], std::to_string(k));
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -29,17 +29,19 @@ struct Source_point
 
 /// Throws when there is no source to start from.
 /// Throws when there is no source, or when every source is a vertex in no face.
+/// Whether vertex v (and every vertex glued to it) is in no face: no path leaves it.
+inline bool is_isolated_point(const Mesh_cache& m, int v)
+{
+  bool any_face = false;
+  m.for_each_copy_of_point(v, [&](int u) { any_face |= m.first_outgoing[std::size_t(u)] >= 0; });
+  return !any_face;
+}
+
 inline void check_has_sources(const Mesh_cache& m, const std::vector<Source_point>& sources)
 {
   if(sources.empty())
     throw Geodesic_error("no source was given");
-  auto isolated = [&](const Source_point& s) {
-    if(s.vertex < 0)
-      return false;
-    bool any_face = false;
-    m.for_each_copy_of_point(s.vertex, [&](int u) { any_face |= m.first_outgoing[std::size_t(u)] >= 0; });
-    return !any_face;
-  };
+  auto isolated = [&](const Source_point& s) { return s.vertex >= 0 && is_isolated_point(m, s.vertex); };
   if(std::all_of(sources.begin(), sources.end(), isolated))
     throw Geodesic_error("source vertex " + std::to_string(sources.front().vertex) +
                          " is in no face (an isolated vertex): no surface to measure distances on");

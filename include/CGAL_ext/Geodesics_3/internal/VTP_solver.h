@@ -99,6 +99,27 @@ public:
     }
   }
 
+  /// Starts from a distance field already reached (the distance and nearest source of every
+  /// vertex, in the cache's unit, as `distances()` and `nearest_sources()` give them) instead of
+  /// +infinity: the run lowers it where its own sources are nearer, and only there, since the
+  /// trimming by edge vertices drops every window that cannot lower a vertex. Its sources are
+  /// numbered from `first_source_index` on.
+  void start_from(std::vector<double> distances, std::vector<int> nearest, int first_source_index)
+  {
+    if(distances.size() != m_distance.size() || nearest.size() != m_distance.size())
+      throw Geodesic_error("a distance field to start from has one value per vertex");
+    m_distance = std::move(distances);
+    m_nearest_source = std::move(nearest);
+    m_first_source_index = first_source_index;
+  }
+
+  /// Hands the distances and nearest sources over to the caller (the solver is done with them).
+  void take_result(std::vector<double>& distances, std::vector<int>& nearest)
+  {
+    distances.swap(m_distance);
+    nearest.swap(m_nearest_source);
+  }
+
   /// Runs the propagation; distances beyond the max distance, or beyond the farthest stop
   /// vertex when stop vertices are given, are +infinity.
   void run()
@@ -107,7 +128,7 @@ public:
     check_has_sources(m_mesh, m_sources);
     m_main_slot = m_pool.use_one_slot_per_thread(m_parallel);
     for(const Source_point& s : m_sources) {
-      const int index = int(&s - m_sources.data());
+      const int index = m_first_source_index + int(&s - m_sources.data());
       if(s.vertex >= 0) {
         m_emits_when_taken[s.vertex] = 1;
         relax(s.vertex, 0., index);
@@ -534,6 +555,7 @@ private:
   std::size_t m_main_slot = 0; // the pool slot of the thread running run()
   std::vector<int> m_stop_vertices;
   std::size_t m_stops_taken = 0;
+  int m_first_source_index = 0; // the number of the first source (start_from)
   double m_stop_limit = infinity();
   const double m_reset_step; // lambda h, or 0 for exact propagation
   double m_next_reset = 0;

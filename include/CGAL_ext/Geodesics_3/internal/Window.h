@@ -37,7 +37,7 @@ struct Window_geometry
 struct Window : Window_geometry
 {
   double d0, d1;
-  std::int64_t source; // (64 bits: a padded struct is copied field by field)
+  int source;
 };
 static_assert(sizeof(Window) == 64, "a list window is one cache line");
 

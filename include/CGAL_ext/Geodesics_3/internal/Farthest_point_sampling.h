@@ -1,0 +1,118 @@
+// Copyright (c) 2026 The CGAL_ext geodesics developers.
+#ifndef CGAL_EXT_GEODESICS_3_INTERNAL_FARTHEST_POINT_SAMPLING_H
+#define CGAL_EXT_GEODESICS_3_INTERNAL_FARTHEST_POINT_SAMPLING_H
+
+// Exact farthest-point sampling, incremental: each new sample's propagation starts from the
+// distance field of the samples before it, so it sweeps only the region where the new sample
+// is nearer (VTP_solver::start_from).
+
+#include <CGAL_ext/Geodesics_3/Geodesic_error.h>
+#include <CGAL_ext/Geodesics_3/internal/Geodesic_setup.h>
+#include <CGAL_ext/Geodesics_3/internal/Mesh_cache.h>
+#include <CGAL_ext/Geodesics_3/internal/Solver_settings.h>
+#include <CGAL_ext/Geodesics_3/internal/Sources.h>
+#include <CGAL_ext/Geodesics_3/internal/VTP_solver.h>
+
+#include <cstddef>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace CGAL_ext {
+namespace Geodesics_3 {
+namespace internal {
+
+/// The distance field of a growing set of samples (cache indices, in the cache's unit).
+template <bool parallel>
+class Farthest_point_sampler
+{
+public:
+  Farthest_point_sampler(const Mesh_cache& mesh, const Solver_settings& settings)
+    : m_mesh(mesh)
+    , m_settings(settings)
+    , m_distance(mesh.number_of_vertices, std::numeric_limits<double>::infinity())
+    , m_nearest(mesh.number_of_vertices, -1)
+  {
+  }
+
+  /// Adds vertex v as the next sample: one propagation from v over the region where it is
+  /// nearer than every earlier sample (none for a vertex in no face: it covers itself).
+  void add_sample(int v)
+  {
+    const int index = int(m_samples.size());
+    m_samples.push_back(v);
+    if(is_isolated_point(m_mesh, v)) {
+      m_mesh.for_each_copy_of_point(v, [&](int u) {
+        m_distance[std::size_t(u)] = 0;
+        m_nearest[std::size_t(u)] = index;
+      });
+      return;
+    }
+    VTP_solver solver(m_mesh, m_settings, parallel);
+    solver.start_from(std::move(m_distance), std::move(m_nearest), index);
+    Source_point s;
+    s.vertex = v;
+    solver.add_source(s);
+    run_solver<parallel>(solver, m_settings.number_of_threads);
+    solver.take_result(m_distance, m_nearest);
+    const Geodesic_statistics& run = solver.statistics();
+    m_statistics.windows_created += run.windows_created;
+    m_statistics.peak_windows = std::max(m_statistics.peak_windows, run.peak_windows);
+    m_statistics.peak_window_bytes = std::max(m_statistics.peak_window_bytes, run.peak_window_bytes);
+    m_statistics.vertices_popped += run.vertices_popped;
+    m_statistics.lists_propagated += run.lists_propagated;
+    m_statistics.seconds_solve += run.seconds_solve;
+    m_last_windows = run.windows_created;
+  }
+
+  /// The vertex of the caller's mesh farthest from every sample (the lowest index of those at
+  /// the largest distance; +infinity first: a component with no sample yet).
+  int farthest_vertex() const
+  {
+    int best = 0;
+    for(std::size_t v = 1; v < m_mesh.number_of_mesh_vertices; ++v)
+      if(m_distance[v] > m_distance[std::size_t(best)])
+        best = int(v);
+    return best;
+  }
+  /// The largest distance of a vertex to its nearest sample.
+  double covering_radius() const { return m_distance[std::size_t(farthest_vertex())]; }
+
+  const std::vector<int>& samples() const { return m_samples; }
+  const std::vector<double>& distances() const { return m_distance; }
+  const std::vector<int>& nearest_samples() const { return m_nearest; }
+  /// What the propagations did, added up (peaks: the largest).
+  const Geodesic_statistics& statistics() const { return m_statistics; }
+  /// The windows the last sample's propagation made.
+  std::size_t windows_of_last_sample() const { return m_last_windows; }
+
+private:
+  const Mesh_cache& m_mesh;
+  const Solver_settings m_settings;
+  std::vector<double> m_distance;
+  std::vector<int> m_nearest;
+  std::vector<int> m_samples;
+  Geodesic_statistics m_statistics;
+  std::size_t m_last_windows = 0;
+};
+
+/// The default first sample: the vertex farthest from the first vertex in a face (vertex 0 on
+/// a mesh without isolated vertices).
+template <bool parallel>
+int default_first_sample(const Mesh_cache& mesh, const Solver_settings& settings)
+{
+  int start = 0;
+  while(std::size_t(start) < mesh.number_of_mesh_vertices && is_isolated_point(mesh, start))
+    ++start;
+  if(std::size_t(start) == mesh.number_of_mesh_vertices)
+    throw Geodesic_error("every vertex is in no face: there is no surface to sample");
+  Farthest_point_sampler<parallel> from_start(mesh, settings);
+  from_start.add_sample(start);
+  return from_start.farthest_vertex();
+}
+
+} // namespace internal
+} // namespace Geodesics_3
+} // namespace CGAL_ext
+
+#endif // CGAL_EXT_GEODESICS_3_INTERNAL_FARTHEST_POINT_SAMPLING_H

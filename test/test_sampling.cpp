@@ -1,0 +1,204 @@
+// Exact farthest-point sampling: each sample is the exact argmax of the distance to the samples
+// before it (checked against single-source solves), the covering radius never grows, every
+// thread count gives the same samples, and the propagations are incremental.
+#include "support/checks.h"
+#include "support/solve.h"
+
+#include <CGAL_ext/farthest_point_sampling.h>
+
+#include <iterator>
+#include <vector>
+
+namespace {
+
+using namespace test_support;
+using CGAL_ext::parameters::number_of_threads;
+
+/// A sampling and everything it reports.
+struct Sampling
+{
+  std::vector<Vertex> samples;
+  std::vector<double> radii;
+  std::vector<double> distances;
+  std::vector<long> labels;
+  CGAL_ext::Geodesic_statistics statistics;
+};
+
+template <class ConcurrencyTag = CGAL::Sequential_tag,
+          class NamedParameters = CGAL_ext::parameters::Default_named_parameters_type>
+Sampling sample(const Mesh& m, std::size_t n, const NamedParameters& np = CGAL_ext::parameters::default_values())
+{
+  Sampling s;
+  auto distance = get(CGAL::dynamic_vertex_property_t<double>(), m);
+  auto label = get(CGAL::dynamic_vertex_property_t<long>(), m);
+  CGAL_ext::farthest_point_sampling<ConcurrencyTag>(m, n, std::back_inserter(s.samples),
+                                                    np.covering_radius_output_iterator(std::back_inserter(s.radii))
+                                                      .vertex_distance_map(distance)
+                                                      .vertex_source_map(label)
+                                                      .statistics(s.statistics));
+  for(Vertex v : vertices(m)) {
+    s.distances.push_back(get(distance, v));
+    s.labels.push_back(get(label, v));
+  }
+  return s;
+}
+
+/// The index of the largest value (the lowest index of the largest).
+std::size_t argmax(const std::vector<double>& d)
+{
+  std::size_t best = 0;
+  for(std::size_t i = 1; i < d.size(); ++i)
+    if(d[i] > d[best])
+      best = i;
+  return best;
+}
+
+// Each sample is the farthest vertex from the samples before it, by single-source exact
+// solves; the covering radius after each sample is the largest of those distances and never
+// grows; the final distances and labels are those of the samples' multi-source solve.
+TEST(Farthest_point_sampling, each_sample_is_the_exact_farthest_vertex)
+{
+  for(const char* name : {"elephant", "mushroom"}) {
+    const Mesh& m = test_mesh(name);
+    const double tolerance = 1e-12 * bbox_diagonal(m);
+    const std::size_t n = 12;
+    const Sampling s = sample(m, n);
+    ASSERT_EQ(s.samples.size(), n) << name;
+    ASSERT_EQ(s.radii.size(), n) << name;
+    // the default first sample: the farthest vertex from vertex 0
+    const std::vector<double> from_0 = solve(m, Vertex(0));
+    EXPECT_NEAR(from_0[s.samples[0].idx()], from_0[argmax(from_0)], tolerance) << name;
+
+    std::vector<double> nearest(m.number_of_vertices(), inf);
+    for(std::size_t k = 0; k < n; ++k) {
+      if(k > 0) {
+        const double farthest = nearest[argmax(nearest)];
+        EXPECT_NEAR(nearest[s.samples[k].idx()], farthest, tolerance) << name << ": sample " << k;
+        EXPECT_LE(s.radii[k], s.radii[k - 1]) << name << ": sample " << k;
+      }
+      const std::vector<double> d = solve(m, s.samples[k]);
+      for(std::size_t v = 0; v < nearest.size(); ++v)
+        nearest[v] = std::min(nearest[v], d[v]);
+      EXPECT_NEAR(s.radii[k], nearest[argmax(nearest)], tolerance) << name << ": radius after sample " << k;
+    }
+    EXPECT_LE(max_difference(s.distances, nearest), tolerance) << name;
+    EXPECT_LE(max_difference(s.distances, solve(m, s.samples)), tolerance) << name;
+    for(std::size_t k = 0; k < n; ++k)
+      EXPECT_EQ(s.labels[s.samples[k].idx()], long(k)) << name << ": the cell of sample " << k;
+    for(std::size_t v = 0; v < nearest.size(); ++v) {
+      ASSERT_TRUE(s.labels[v] >= 0 && std::size_t(s.labels[v]) < n) << name << ": vertex " << v;
+      EXPECT_NEAR(solve(m, s.samples[std::size_t(s.labels[v])])[v], nearest[v], tolerance)
+        << name << ": vertex " << v;
+      if(v > 200) // one solve per vertex checked: the first 200 do
+        break;
+    }
+  }
+}
+
+// PVTP gives the same samples, radii, distances and labels for every thread count, and the
+// same samples as VTP; a first sample and a covering radius are honoured.
+TEST(Farthest_point_sampling, thread_counts_first_sample_and_covering_radius)
+{
+  const Mesh& m = test_mesh("elephant");
+  const Sampling sequential = sample(m, 10);
+  const Sampling one = sample<CGAL::Parallel_tag>(m, 10, number_of_threads(1));
+  EXPECT_EQ(one.samples, sequential.samples);
+  EXPECT_LE(max_difference(one.distances, sequential.distances), 1e-12 * bbox_diagonal(m));
+  for(int threads : {2, 4}) {
+    const Sampling many = sample<CGAL::Parallel_tag>(m, 10, number_of_threads(threads));
+    EXPECT_EQ(many.samples, one.samples) << threads << " threads";
+    EXPECT_EQ(many.radii, one.radii) << threads << " threads";
+    EXPECT_EQ(many.distances, one.distances) << threads << " threads";
+    EXPECT_EQ(many.labels, one.labels) << threads << " threads";
+  }
+
+  const Sampling from_100 = sample(m, 3, CGAL_ext::parameters::first_sample(Vertex(100)));
+  EXPECT_EQ(from_100.samples.front(), Vertex(100));
+  const std::vector<double> d = solve(m, Vertex(100));
+  EXPECT_EQ(from_100.samples[1], Vertex(argmax(d)));
+
+  // stop at the radius reached after the 6th sample: 6 samples, the same ones
+  const Sampling covered = sample(m, 100, CGAL_ext::parameters::covering_radius(sequential.radii[5]));
+  EXPECT_EQ(covered.samples, std::vector<Vertex>(sequential.samples.begin(), sequential.samples.begin() + 6));
+  EXPECT_EQ(covered.radii.back(), sequential.radii[5]);
+}
+
+// Incremental: each new sample's propagation sweeps only its own cell. Solving every sample over
+// the whole mesh would make 40 full solves' windows; the samples make a few, and the last ten,
+// whose cells are small, make a small part of a full solve each.
+TEST(Farthest_point_sampling, later_samples_sweep_only_their_cells)
+{
+  const Mesh& m = test_mesh("elephant");
+  CGAL_ext::Geodesic_statistics full;
+  auto unused = get(CGAL::dynamic_vertex_property_t<double>(), m);
+  CGAL_ext::geodesic_distances(m, unused, Vertex(0), CGAL_ext::parameters::statistics(full));
+  const std::size_t thirty = sample(m, 30).statistics.windows_created;
+  const std::size_t forty = sample(m, 40).statistics.windows_created;
+  EXPECT_LT(forty, 40 * full.windows_created / 5)
+    << "40 samples made " << forty << " windows, one full solve " << full.windows_created;
+  EXPECT_LT((forty - thirty) / 10, full.windows_created / 10)
+    << "samples 31 to 40 made " << forty - thirty << " windows, one full solve " << full.windows_created;
+}
+
+// Several components each get a sample before any gets a second; a vertex in no face is a
+// component of its own.
+TEST(Farthest_point_sampling, every_component_is_sampled_first)
+{
+  // two unit squares far apart, and an isolated point
+  std::vector<Point> points;
+  std::vector<Triangle> triangles;
+  for(int c = 0; c < 2; ++c) {
+    const int o = int(points.size());
+    for(int j = 0; j <= 4; ++j)
+      for(int i = 0; i <= 4; ++i)
+        points.push_back(Point(i * 0.25 + 10 * c, j * 0.25, 0));
+    for(int j = 0; j < 4; ++j)
+      for(int i = 0; i < 4; ++i)
+        add_quad(triangles, o + j * 5 + i, o + j * 5 + i + 1, o + (j + 1) * 5 + i + 1, o + (j + 1) * 5 + i, true);
+  }
+  Mesh m = mesh_from_soup(points, triangles);
+  const Vertex isolated = m.add_vertex(Point(5, 5, 5));
+  const Sampling s = sample(m, 4, CGAL_ext::parameters::first_sample(Vertex(0)));
+  ASSERT_EQ(s.samples.size(), 4u);
+  EXPECT_EQ(s.radii[0], inf);
+  EXPECT_EQ(s.radii[1], inf);
+  EXPECT_TRUE(std::isfinite(s.radii[2]));
+  // the second and third samples: the first vertex of the other square, and the isolated one
+  EXPECT_EQ(s.samples[1], Vertex(25));
+  EXPECT_EQ(s.samples[2], isolated);
+  EXPECT_EQ(s.distances[isolated.idx()], 0.);
+  EXPECT_EQ(s.labels[isolated.idx()], 2);
+  // the fourth: the corner of the first square opposite vertex 0
+  EXPECT_EQ(s.samples[3], Vertex(24));
+  EXPECT_NEAR(s.radii[3], std::sqrt(2.), 1e-12);
+}
+
+TEST(Farthest_point_sampling, bad_requests_are_named)
+{
+  const Mesh& m = test_mesh("elephant");
+  std::vector<Vertex> out;
+  auto fps = [&](std::size_t n, const auto& np) {
+    return [&m, &out, n, np] { CGAL_ext::farthest_point_sampling(m, n, std::back_inserter(out), np); };
+  };
+  const auto none = CGAL_ext::parameters::default_values();
+  EXPECT_TRUE(throws_geodesic_error(fps(0, none), {"at least 1"}));
+  EXPECT_TRUE(throws_geodesic_error(fps(2776, none), {"2776 samples", "2775 vertices"}));
+  EXPECT_TRUE(throws_geodesic_error(fps(3, CGAL_ext::parameters::covering_radius(0.)), {"covering radius", "positive"}));
+  EXPECT_TRUE(throws_geodesic_error(fps(3, CGAL_ext::parameters::covering_radius(-1.)), {"covering radius"}));
+  EXPECT_TRUE(throws_geodesic_error(fps(3, CGAL_ext::parameters::first_sample(Vertex(5000))),
+                                    {"first sample vertex 5000", "out of range"}));
+  EXPECT_TRUE(throws_geodesic_error(fps(3, CGAL_ext::parameters::max_distance(1.)), {"max_distance"}));
+  EXPECT_TRUE(throws_geodesic_error(fps(3, CGAL_ext::parameters::algorithm(CGAL_ext::MMP)), {"VTP"}));
+
+  // 5 vertices but 4 distinct points (vertex 4 is vertex 2, by a zero-length edge)
+  const Mesh needle = mesh_from_soup(
+    {Point(0, 0, 0), Point(1, 0, 0), Point(1, 1, 0), Point(0, 1, 0), Point(1, 1, 0)}, {{0, 1, 2}, {0, 2, 3}, {1, 4, 2}});
+  std::vector<Vertex> four;
+  CGAL_ext::farthest_point_sampling(needle, 4, std::back_inserter(four));
+  EXPECT_EQ(four.size(), 4u);
+  EXPECT_TRUE(throws_geodesic_error(
+    [&] { CGAL_ext::farthest_point_sampling(needle, 5, std::back_inserter(four)); },
+    {"5 samples", "after 4", "distance 0"}));
+}
+
+} // namespace
