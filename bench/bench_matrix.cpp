@@ -1,8 +1,9 @@
 // Copyright (c) 2026 The CGAL_ext geodesics developers.
 // Benchmark of distance-matrix rows: K sources spread over the mesh, each solved alone (exact
-// VTP), all rows or local rows within R mean edge lengths, on T threads; against one full
-// single-source VTP solve of the same mesh. Prints one key=value line.
-// Usage: bench_matrix --mesh FILE --rows K [--radius R] [--threads T]
+// VTP), all rows or local rows within R mean edge lengths, dense (a distance per vertex) or
+// sparse (the vertices reached), on T threads; against one full single-source VTP solve of the
+// same mesh. Prints one key=value line.
+// Usage: bench_matrix --mesh FILE --rows K [--radius R] [--threads T] [--sparse 1]
 
 #include <CGAL_ext/geodesic_distance_matrix.h>
 #include <CGAL_ext/geodesic_distances.h>
@@ -34,6 +35,7 @@ int main(int argc, char** argv)
   std::size_t rows = 16;
   double radius_edges = std::numeric_limits<double>::infinity();
   int threads = 1;
+  bool sparse = false;
   for(int i = 1; i + 1 < argc; i += 2) {
     const std::string a = argv[i], v = argv[i + 1];
     if(a == "--mesh")
@@ -44,8 +46,10 @@ int main(int argc, char** argv)
       radius_edges = std::stod(v);
     else if(a == "--threads")
       threads = std::stoi(v);
+    else if(a == "--sparse")
+      sparse = v == "1";
     else {
-      std::cerr << "usage: bench_matrix --mesh FILE --rows K [--radius R] [--threads T]\n";
+      std::cerr << "usage: bench_matrix --mesh FILE --rows K [--radius R] [--threads T] [--sparse 1]\n";
       return 2;
     }
   }
@@ -71,16 +75,23 @@ int main(int argc, char** argv)
     sources.push_back(vertex_descriptor(std::uint32_t(i * n / rows)));
   const tbb::global_control allowance(tbb::global_control::max_allowed_parallelism, std::size_t(std::max(threads, 1)));
   std::size_t entries = 0;
+  const auto np = CGAL_ext::parameters::number_of_threads(threads).max_distance(radius);
   const auto start = Clock::now();
-  CGAL_ext::geodesic_distance_rows<CGAL::Parallel_tag>(
-    mesh, sources,
-    [&](std::size_t, const std::vector<double>& row) {
-      for(double d : row)
-        entries += std::isfinite(d);
-    },
-    CGAL_ext::parameters::number_of_threads(threads).max_distance(radius));
+  if(sparse)
+    CGAL_ext::geodesic_sparse_distance_rows<CGAL::Parallel_tag>(
+      mesh, sources, [&](std::size_t, const std::vector<std::pair<std::size_t, double>>& row) { entries += row.size(); },
+      np);
+  else
+    CGAL_ext::geodesic_distance_rows<CGAL::Parallel_tag>(
+      mesh, sources,
+      [&](std::size_t, const std::vector<double>& row) {
+        for(double d : row)
+          entries += std::isfinite(d);
+      },
+      np);
   const double seconds = seconds_since(start);
   std::cout << "vertices=" << n << " rows=" << rows << " radius_edges=" << radius_edges << " threads=" << threads
+            << " sparse=" << sparse
             << " seconds_rows=" << seconds << " seconds_per_row=" << seconds / double(rows)
             << " entries_per_row=" << double(entries) / double(rows)
             << " seconds_full_solve=" << full.seconds_solve + full.seconds_setup

@@ -658,6 +658,53 @@ TEST(Distance_matrix, square_matrix_is_symmetric_and_a_local_one_is_cut_at_the_r
     EXPECT_EQ(local[k], full[k] <= radius ? full[k] : inf) << "entry " << k;
 }
 
+// Sparse rows: exactly the finite entries of single-source solves within the radius, by vertex
+// index, for every thread count (each thread's solver is reset between rows: rows after a far-
+// reaching one must not keep its distances); the CSR matrix holds the same entries.
+TEST(Distance_matrix, sparse_rows_are_the_entries_within_the_radius)
+{
+  const Mesh& m = test_mesh("elephant");
+  const double radius = 0.08 * bbox_diagonal(m);
+  std::vector<Vertex> sources = spread_vertices(m, 10);
+  sources.push_back(sources.front()); // a row again after others
+  std::vector<std::vector<std::pair<std::size_t, double>>> expected;
+  std::size_t entries = 0;
+  for(Vertex s : sources) {
+    const std::vector<double> d = solve(m, s, CGAL_ext::parameters::max_distance(radius));
+    expected.emplace_back();
+    for(std::size_t v = 0; v < d.size(); ++v)
+      if(d[v] < inf)
+        expected.back().emplace_back(v, d[v]);
+    entries += expected.back().size();
+  }
+  EXPECT_LT(entries, sources.size() * m.number_of_vertices() / 5) << "the radius is local";
+  for(int threads : {1, 2, 4}) {
+    std::size_t next = 0;
+    CGAL_ext::geodesic_sparse_distance_rows<CGAL::Parallel_tag>(
+      m, sources,
+      [&](std::size_t i, const std::vector<std::pair<std::size_t, double>>& row) {
+        EXPECT_EQ(i, next++);
+        EXPECT_EQ(row, expected[i]) << threads << " threads, row " << i;
+      },
+      number_of_threads(threads).max_distance(radius));
+    EXPECT_EQ(next, sources.size());
+  }
+  const CGAL_ext::Geodesic_sparse_matrix csr =
+    CGAL_ext::geodesic_sparse_distance_matrix(m, sources, CGAL_ext::parameters::max_distance(radius));
+  ASSERT_EQ(csr.rows, sources.size());
+  EXPECT_EQ(csr.columns, m.number_of_vertices());
+  ASSERT_EQ(csr.row_begin.size(), sources.size() + 1);
+  ASSERT_EQ(csr.column.size(), entries);
+  ASSERT_EQ(csr.value.size(), entries);
+  for(std::size_t i = 0; i < sources.size(); ++i) {
+    ASSERT_EQ(csr.row_begin[i + 1] - csr.row_begin[i], expected[i].size()) << "row " << i;
+    for(std::size_t k = 0; k < expected[i].size(); ++k) {
+      EXPECT_EQ(csr.column[csr.row_begin[i] + k], expected[i][k].first);
+      EXPECT_EQ(csr.value[csr.row_begin[i] + k], expected[i][k].second);
+    }
+  }
+}
+
 TEST(Distance_matrix, face_point_sources_and_errors)
 {
   const Mesh& m = test_mesh("elephant");

@@ -4,7 +4,7 @@
 
 /// \file geodesic_distance_matrix.h
 /// Exact geodesic distances from each of several sources to every vertex: one row per source,
-/// the sources solved in parallel.
+/// dense or sparse (the vertices within a radius), the sources solved in parallel.
 
 #include <CGAL_ext/Geodesics_3/Geodesic_algorithm.h>
 #include <CGAL_ext/Geodesics_3/Geodesic_error.h>
@@ -15,6 +15,7 @@
 
 #include <cstddef>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace CGAL_ext {
@@ -71,6 +72,80 @@ std::vector<double> geodesic_distance_matrix(const TriangleMesh& tm, const Sourc
   geodesic_distance_rows<ConcurrencyTag>(
     tm, sources, [&](std::size_t, const std::vector<double>& row) { matrix.insert(matrix.end(), row.begin(), row.end()); },
     np);
+  return matrix;
+}
+
+/// \ingroup PkgGeodesics3Ref
+/// computes, for each of `sources` in turn, the vertices within `max_distance` of it alone and
+/// their exact geodesic distances (a sparse row of the distance matrix), and hands the row to
+/// `row`, as `geodesic_distance_rows()` does (in parallel across sources with
+/// `CGAL::Parallel_tag`, the rows in order, from the calling thread). A row costs what its
+/// propagation sweeps, not the size of the mesh: each thread keeps one solver and resets only
+/// what the last row wrote. This is the local distance matrix (every vertex to the vertices
+/// within a radius) without any dense row in memory.
+///
+/// \tparam ConcurrencyTag, TriangleMesh, Sources as for `geodesic_distance_rows()`
+/// \tparam SparseRowFunction callable as `row(std::size_t i, const std::vector<std::pair<std::size_t, double>>& entries)`
+///
+/// \param tm the triangle mesh
+/// \param sources the sources, one row each
+/// \param row receives source `i`'s row: the pairs (vertex index, distance) of the vertices
+///        reached within `max_distance`, by increasing vertex index (the `vertex_index_map`);
+///        the vector is reused after the call returns
+/// \param np optional named parameters, as for `geodesic_distance_rows()`; without `max_distance`
+///        every reachable vertex is in every row
+/// \throws Geodesic_error as `geodesic_distance_rows()`
+template <class ConcurrencyTag = CGAL::Sequential_tag, class TriangleMesh, class Sources, class SparseRowFunction,
+          class NamedParameters = parameters::Default_named_parameters_type>
+void geodesic_sparse_distance_rows(const TriangleMesh& tm, const Sources& sources, SparseRowFunction row,
+                                   const NamedParameters& np = parameters::default_values())
+{
+  Geodesics_3::internal::sparse_distance_rows<Geodesics_3::internal::is_parallel_tag<ConcurrencyTag>()>(tm, sources,
+                                                                                                       row, np);
+}
+
+/// \ingroup PkgGeodesics3Ref
+/// A sparse matrix in compressed sparse row (CSR) form, as SciPy's `csr_matrix((value, column,
+/// row_begin), shape=(rows, columns))` and Eigen's `Map<SparseMatrix<double, RowMajor>>` take it.
+struct Geodesic_sparse_matrix
+{
+  std::size_t rows = 0;    ///< one per source
+  std::size_t columns = 0; ///< one per vertex
+  std::vector<std::size_t> row_begin; ///< `rows + 1` offsets: row `i` is entries `[row_begin[i], row_begin[i+1])`
+  std::vector<std::size_t> column;    ///< the vertex index of each entry, increasing within a row
+  std::vector<double> value;          ///< the distance of each entry
+};
+
+/// \ingroup PkgGeodesics3Ref
+/// the local distance matrix from `sources` to the vertices within `max_distance` of each, in
+/// CSR form: the rows of `geodesic_sparse_distance_rows()`, collected. Its memory is what the
+/// entries need.
+///
+/// \tparam ConcurrencyTag, TriangleMesh, Sources as for `geodesic_distance_rows()`
+/// \param tm the triangle mesh
+/// \param sources the sources, one row each
+/// \param np optional named parameters, as for `geodesic_distance_rows()` (`max_distance`, above all)
+/// \return the `sources.size()` x `num_vertices(tm)` matrix
+/// \throws Geodesic_error as `geodesic_distance_rows()`
+template <class ConcurrencyTag = CGAL::Sequential_tag, class TriangleMesh, class Sources,
+          class NamedParameters = parameters::Default_named_parameters_type>
+Geodesic_sparse_matrix geodesic_sparse_distance_matrix(const TriangleMesh& tm, const Sources& sources,
+                                                       const NamedParameters& np = parameters::default_values())
+{
+  Geodesic_sparse_matrix matrix;
+  matrix.columns = num_vertices(tm);
+  matrix.row_begin.push_back(0);
+  geodesic_sparse_distance_rows<ConcurrencyTag>(
+    tm, sources,
+    [&](std::size_t, const std::vector<std::pair<std::size_t, double>>& entries) {
+      for(const auto& e : entries) {
+        matrix.column.push_back(e.first);
+        matrix.value.push_back(e.second);
+      }
+      matrix.row_begin.push_back(matrix.column.size());
+    },
+    np);
+  matrix.rows = matrix.row_begin.size() - 1;
   return matrix;
 }
 

@@ -2,8 +2,8 @@
 #ifndef CGAL_EXT_GEODESICS_3_INTERNAL_DISTANCE_ROWS_H
 #define CGAL_EXT_GEODESICS_3_INTERNAL_DISTANCE_ROWS_H
 
-// The rows of a distance matrix: independent single-source solves on one mesh cache, in
-// parallel across sources, handed over in source order from the calling thread.
+// The rows of a distance matrix, dense or sparse: independent single-source solves on one mesh
+// cache, in parallel across sources, handed over in source order from the calling thread.
 
 #include <CGAL_ext/Geodesics_3/Geodesic_algorithm.h>
 #include <CGAL_ext/Geodesics_3/Geodesic_error.h>
@@ -13,14 +13,26 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <memory>
+#include <utility>
 #include <vector>
 
 namespace CGAL_ext {
 namespace Geodesics_3 {
 namespace internal {
 
-template <bool parallel, class TriangleMesh, class Sources, class RowFunction, class NamedParameters>
-void distance_rows(const TriangleMesh& tm, const Sources& sources, RowFunction& row, const NamedParameters& np)
+/// One entry of a sparse row: a vertex index and its distance.
+typedef std::pair<std::size_t, double> Row_entry;
+
+/// Calls `solve(i, solver)` for every source i, each a sequential VTP run on a solver of the
+/// calling thread (kept and reset between rows: a row costs what it sweeps), in parallel across
+/// sources; then `hand_over(i, solver_result)` in source order, from the calling thread, with
+/// what `solve` made of row i. A batch of rows is solved, then handed over: a few rows per
+/// thread keep the threads busy and the memory small.
+template <bool parallel, class Row, class TriangleMesh, class Sources, class MakeRow, class HandOver,
+          class NamedParameters>
+void for_each_row(const TriangleMesh& tm, const Sources& sources, const NamedParameters& np, MakeRow make_row,
+                  HandOver hand_over)
 {
   typedef Vertex_point_map_of<TriangleMesh, NamedParameters> Vertex_point_map;
   const Solver_settings settings = read_solver_settings(np, VTP);
@@ -31,30 +43,60 @@ void distance_rows(const TriangleMesh& tm, const Sources& sources, RowFunction& 
   const std::vector<Source_point> points = mesh.source_points(sources);
   if(points.empty())
     throw Geodesic_error("no source was given");
-  const std::size_t number_of_vertices = mesh.cache().number_of_mesh_vertices;
 
-  // Each row is one sequential solve, a task of its own. A batch of rows is solved, then handed
-  // over in order (from the calling thread, which runs the arena's loop); a few rows per thread
-  // keep the threads busy and the memory small.
   run_in_arena<parallel>(settings.number_of_threads, [&] {
+    std::vector<std::unique_ptr<VTP_solver>> solvers(parallel ? arena_concurrency() : 1);
     const std::size_t batch = parallel ? 4 * arena_concurrency() : 1;
-    std::vector<std::vector<double>> rows(std::min(batch, points.size()));
+    std::vector<Row> rows(std::min(batch, points.size()));
     for(std::size_t first = 0; first < points.size(); first += batch) {
       const std::size_t n = std::min(batch, points.size() - first);
-      for_each_index(parallel, n, 1, [&](std::size_t j, std::size_t) {
-        VTP_solver solver(mesh.cache(), settings, false);
-        solver.add_source(points[first + j]);
-        solver.run();
-        const std::vector<double>& d = solver.distances();
-        std::vector<double>& r = rows[j];
-        r.resize(number_of_vertices);
-        for(std::size_t v = 0; v < number_of_vertices; ++v)
-          r[v] = mesh.to_mesh_unit(d[v]);
+      for_each_index(parallel, n, 1, [&](std::size_t j, std::size_t slot) {
+        std::unique_ptr<VTP_solver>& solver = solvers[slot];
+        if(!solver)
+          solver = std::make_unique<VTP_solver>(mesh.cache(), settings, false);
+        solver->reset();
+        solver->add_source(points[first + j]);
+        solver->run();
+        make_row(*solver, mesh, rows[j]);
       });
       for(std::size_t j = 0; j < n; ++j)
-        row(first + j, static_cast<const std::vector<double>&>(rows[j]));
+        hand_over(first + j, static_cast<const Row&>(rows[j]));
     }
   });
+}
+
+/// Dense rows: the distance of every vertex of the mesh, by vertex index.
+template <bool parallel, class TriangleMesh, class Sources, class RowFunction, class NamedParameters>
+void distance_rows(const TriangleMesh& tm, const Sources& sources, RowFunction& row, const NamedParameters& np)
+{
+  for_each_row<parallel, std::vector<double>>(
+    tm, sources, np,
+    [](const VTP_solver& solver, const auto& mesh, std::vector<double>& r) {
+      const std::vector<double>& d = solver.distances();
+      r.assign(mesh.cache().number_of_mesh_vertices, VTP_solver::infinity());
+      for(int v : solver.reached_vertices())
+        if(std::size_t(v) < r.size())
+          r[std::size_t(v)] = mesh.to_mesh_unit(d[std::size_t(v)]);
+    },
+    row);
+}
+
+/// Sparse rows: the vertices reached (within the max distance), by vertex index, in order.
+template <bool parallel, class TriangleMesh, class Sources, class RowFunction, class NamedParameters>
+void sparse_distance_rows(const TriangleMesh& tm, const Sources& sources, RowFunction& row,
+                          const NamedParameters& np)
+{
+  for_each_row<parallel, std::vector<Row_entry>>(
+    tm, sources, np,
+    [](const VTP_solver& solver, const auto& mesh, std::vector<Row_entry>& r) {
+      const std::vector<double>& d = solver.distances();
+      r.clear();
+      for(int v : solver.reached_vertices())
+        if(std::size_t(v) < mesh.cache().number_of_mesh_vertices && d[std::size_t(v)] < VTP_solver::infinity())
+          r.emplace_back(std::size_t(v), mesh.to_mesh_unit(d[std::size_t(v)]));
+      std::sort(r.begin(), r.end());
+    },
+    row);
 }
 
 } // namespace internal

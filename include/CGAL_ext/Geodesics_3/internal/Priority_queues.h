@@ -35,6 +35,7 @@ public:
   }
   bool empty() const { return m_heap.empty(); }
   std::size_t size() const { return m_heap.size(); }
+  void clear() { m_heap.clear(); }
   const Entry& top() const { return m_heap.front(); }
   void pop()
   {
@@ -82,6 +83,15 @@ public:
   }
   bool empty() const { return m_size == 0; }
   std::size_t size() const { return m_size; }
+  /// Empties the queue, keeping the buffers of the buckets in use.
+  void clear()
+  {
+    for(std::size_t i = m_first; i < m_buckets.size(); ++i)
+      m_buckets[i].clear();
+    m_first = 0;
+    m_consumed = 0;
+    m_size = 0;
+  }
 
   /// Moves the entries of the lowest non-empty bucket to `out` (which is cleared first), at
   /// most `max_count` of them, oldest first.

@@ -111,7 +111,48 @@ public:
     m_distance = std::move(distances);
     m_nearest_source = std::move(nearest);
     m_first_source_index = first_source_index;
+    m_started_from_a_field = true;
   }
+
+  /// Makes the solver ready for another run on the same mesh with the same settings, without
+  /// sources or stop vertices: only what the last run wrote is reset, so that a run costs what
+  /// it sweeps, not the size of the mesh (the window lists are all empty after a run).
+  void reset()
+  {
+    if(m_started_from_a_field) {
+      std::fill(m_distance.begin(), m_distance.end(), infinity());
+      std::fill(m_nearest_source.begin(), m_nearest_source.end(), -1);
+      std::fill(m_emitted.begin(), m_emitted.end(), infinity());
+      std::fill(m_is_taken.begin(), m_is_taken.end(), 0);
+      m_emits_when_taken = m_mesh.is_pseudo_source;
+    } else {
+      for(int v : m_reached) {
+        m_distance[v] = infinity();
+        m_nearest_source[v] = -1;
+        m_emitted[v] = infinity();
+        m_is_taken[v] = 0;
+        m_emits_when_taken[v] = m_mesh.is_pseudo_source[v];
+      }
+    }
+    m_reached.clear();
+    m_started_from_a_field = false;
+    m_first_source_index = 0;
+    m_sources.clear();
+    for(int v : m_stop_vertices)
+      m_is_stop[v] = 0;
+    m_stop_vertices.clear();
+    m_stops_taken = 0;
+    m_stop_limit = infinity();
+    m_heap.clear();
+    m_buckets.clear();
+    m_window_limit = m_max_distance;
+    m_peak_windows = 0;
+    m_statistics = Geodesic_statistics();
+  }
+
+  /// The vertices whose distance the last run set (some are +infinity again when beyond the
+  /// limit), each once; not those of a field given to start_from().
+  const std::vector<int>& reached_vertices() const { return m_reached; }
 
   /// Hands the distances and nearest sources over to the caller (the solver is done with them).
   void take_result(std::vector<double>& distances, std::vector<int>& nearest)
@@ -147,7 +188,7 @@ public:
     update_stop_limit();
     const double l = limit();
     if(l < infinity())
-      for(std::size_t v = 0; v < m_distance.size(); ++v)
+      for(int v : m_reached)
         if(m_distance[v] > l) {
           m_distance[v] = infinity();
           m_nearest_source[v] = -1;
@@ -180,6 +221,8 @@ private:
 
   void set_distance(int v, double d, int source)
   {
+    if(m_distance[v] == infinity())
+      m_reached.push_back(v);
     m_distance[v] = d;
     m_nearest_source[v] = source;
     if(!m_is_taken[v] || m_emits_when_taken[v]) {
@@ -556,6 +599,8 @@ private:
   std::vector<int> m_stop_vertices;
   std::size_t m_stops_taken = 0;
   int m_first_source_index = 0; // the number of the first source (start_from)
+  bool m_started_from_a_field = false;
+  std::vector<int> m_reached; // vertices whose distance this run set, each once
   double m_stop_limit = infinity();
   const double m_reset_step; // lambda h, or 0 for exact propagation
   double m_next_reset = 0;
