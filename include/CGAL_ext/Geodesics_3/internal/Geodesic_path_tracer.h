@@ -378,8 +378,8 @@ private:
     const double px = p[0], py = p[1];
     Candidate vertex_way;
     for(int k = 0; k < 3; ++k) {
-      if(b[k] >= 1 - snap)
-        continue; // p is this corner
+      if(b[k] > 1 - snap)
+        continue; // p is this corner (a coordinate of exactly `snap` is not snapped: nor is this)
       const int u = m_mesh.source(3 * f + k);
       const double du = m_distance[u];
       if(!(du < infinity()))
@@ -396,7 +396,7 @@ private:
       }
     }
     for(int k = 0; k < 3; ++k) {
-      if(b[(k + 2) % 3] <= snap)
+      if(b[(k + 2) % 3] < snap)
         continue; // p lies on this edge
       if(best_through_edge(3 * f + k, b, best, good_enough))
         break;

@@ -1,0 +1,602 @@
+// Copyright (c) 2026 The CGAL_ext geodesics developers.
+#ifndef CGAL_EXT_GEODESICS_3_INTERNAL_GEODESIC_VORONOI_H
+#define CGAL_EXT_GEODESICS_3_INTERNAL_GEODESIC_VORONOI_H
+
+// The geodesic Voronoi diagram of the sources of a multi-source MMP build, cut across faces: the
+// bisectors (where two cells meet) and the Voronoi vertices (where three meet), read from the
+// nearest source at any surface point that the path tracer gives exactly.
+
+#include <CGAL_ext/Geodesics_3/Tolerances.h>
+#include <CGAL_ext/Geodesics_3/internal/Edge_window_store.h>
+#include <CGAL_ext/Geodesics_3/internal/Geodesic_path_tracer.h>
+#include <CGAL_ext/Geodesics_3/internal/Mesh_cache.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <map>
+#include <utility>
+#include <vector>
+
+namespace CGAL_ext {
+namespace Geodesics_3 {
+namespace internal {
+
+/// A point of a face of the cache: the face and barycentric coordinates in its corner order.
+struct Face_point
+{
+  int face = -1;
+  std::array<double, 3> b{{0., 0., 0.}};
+};
+
+/// A piece of bisector inside one face, from one boundary point to another, or to a Voronoi
+/// vertex (`vertex_at_end`).
+struct Bisector_piece
+{
+  int first_source, second_source; // first < second
+  std::vector<Face_point> points;
+  int start_vertex = -1, end_vertex = -1; // Voronoi vertex at an end, if any
+};
+
+struct Voronoi_vertex_found
+{
+  Face_point location;
+  std::array<int, 3> sources; // increasing
+};
+
+/// Finds the bisectors and Voronoi vertices face by face. In a face, the nearest source is
+/// known along the boundary (each edge is cut where the windows kept on it change, and every
+/// change of the nearest source between two points is found by bisection to round-off); then:
+/// - two changes: one bisector between them, its inner points found across the chord;
+/// - three changes (three cells): one Voronoi vertex, found by shrinking a triangle around it
+///   to round-off, and three bisectors to it;
+/// - four, one cell on two opposite arcs of the boundary: it runs across the part, and the two
+///   other cells each meet it along one bisector;
+/// - more, or a source inside the face: the face is cut in four, each part handled the same way,
+///   a few times at most (`max_depth`); a part still unresolved then is counted, not guessed.
+///   A part of three cells whose vertex the shrinking missed is cut the same way, down to
+///   round-off.
+class Voronoi_builder
+{
+public:
+  /// Cuts of a part where more than three cells meet, or that hides a cell.
+  static constexpr int max_depth = 10;
+  /// Cuts of a part where three cells meet, when the vertex was not found directly; the part is
+  /// then small enough (`vertex_size`) to put the vertex in its middle.
+  static constexpr int max_vertex_depth = 48;
+  static constexpr double vertex_size = 1e-13;
+
+  Voronoi_builder(const Mesh_cache& mesh, const Edge_window_store& windows, const Geodesic_path_tracer& tracer)
+    : m_mesh(mesh)
+    , m_windows(windows)
+    , m_tracer(tracer)
+  {
+  }
+
+  /// `sources` as the build had them (face points relocated out of removed faces).
+  void run(const std::vector<Source_point>& sources)
+  {
+    std::vector<std::vector<std::pair<int, Face_point>>> sources_in_face(m_mesh.number_of_faces);
+    for(std::size_t i = 0; i < sources.size(); ++i)
+      if(sources[i].vertex < 0) {
+        Face_point p;
+        p.face = sources[i].face;
+        p.b = sources[i].barycentric;
+        m_mesh.relocate_face_point(p.face, p.b);
+        sources_in_face[std::size_t(p.face)].emplace_back(int(i), p);
+      }
+    for(std::size_t f = 0; f < m_mesh.number_of_faces; ++f) {
+      if(m_mesh.is_face_removed(int(f)))
+        continue;
+      std::array<Face_point, 3> corners;
+      for(int k = 0; k < 3; ++k) {
+        corners[std::size_t(k)].face = int(f);
+        corners[std::size_t(k)].b[std::size_t(k)] = 1.;
+      }
+      m_face_sources = &sources_in_face[f];
+      handle_triangle(corners, 0);
+    }
+  }
+
+  const std::vector<Bisector_piece>& pieces() const { return m_pieces; }
+  std::vector<Bisector_piece>& pieces() { return m_pieces; }
+  const std::vector<Voronoi_vertex_found>& vertices() const { return m_vertices; }
+  /// Parts of faces whose cells could not be told apart within `max_depth` cuts.
+  std::size_t unresolved() const { return m_unresolved; }
+
+  /// The nearest source of a point (-1 if none reaches it).
+  int label(const Face_point& p) const
+  {
+    int s = -1;
+    m_tracer.distance(location(p), s);
+    return s;
+  }
+
+  std::array<double, 3> position(const Face_point& p) const { return m_tracer.position(location(p)); }
+
+private:
+  /// A change of the nearest source along a segment of the boundary of a part: at `point`,
+  /// from `before` to `after` going along the boundary.
+  struct Crossing
+  {
+    Face_point point;
+    int before, after;
+  };
+
+  // As the tracer's public queries see the point: coordinates below the snap are 0.
+  Surface_location location(const Face_point& p) const
+  {
+    std::array<double, 3> b = p.b;
+    double sum = 0;
+    for(double& c : b) {
+      if(c < barycentric_snap)
+        c = 0;
+      sum += c;
+    }
+    for(double& c : b)
+      c /= sum;
+    const int zeros = (b[0] == 0) + (b[1] == 0) + (b[2] == 0);
+    for(int k = 0; k < 3; ++k) {
+      if(zeros == 2 && b[std::size_t(k)] > 0)
+        return Surface_location::at_vertex(m_mesh.source(3 * p.face + k));
+      if(zeros == 1 && b[std::size_t((k + 2) % 3)] == 0) {
+        Surface_location s;
+        s.kind = Surface_location::EDGE;
+        s.halfedge = 3 * p.face + k;
+        s.t = b[std::size_t((k + 1) % 3)];
+        return s;
+      }
+    }
+    Surface_location s;
+    s.kind = Surface_location::FACE;
+    s.face = p.face;
+    s.barycentric = b;
+    return s;
+  }
+
+  static Face_point along(const Face_point& p, const Face_point& q, double t)
+  {
+    Face_point r;
+    r.face = p.face;
+    for(std::size_t k = 0; k < 3; ++k)
+      r.b[k] = (1 - t) * p.b[k] + t * q.b[k];
+    // exact zeros stay zero, so that a point of an edge is an edge point
+    for(std::size_t k = 0; k < 3; ++k)
+      if(p.b[k] == 0 && q.b[k] == 0)
+        r.b[k] = 0;
+    return r;
+  }
+
+  /// Every change of the nearest source between p (label lp) and q (label lq), in order from p,
+  /// each located by bisection to round-off.
+  void find_changes(const Face_point& p, int lp, const Face_point& q, int lq, std::vector<Crossing>& out,
+                    int depth = 0) const
+  {
+    if(lp == lq)
+      return;
+    double lo = 0, hi = 1;
+    Face_point a = p, c = q;
+    for(int i = 0; i < 64; ++i) {
+      const double mid = 0.5 * (lo + hi);
+      if(!(mid > lo && mid < hi))
+        break;
+      const Face_point m = along(p, q, mid);
+      const int lm = label(m);
+      if(lm == lp) {
+        lo = mid;
+        a = m;
+      } else if(lm == lq) {
+        hi = mid;
+        c = m;
+      } else { // a third cell in between: the changes on each side of it
+        if(depth < 8) {
+          find_changes(a, lp, m, lm, out, depth + 1);
+          find_changes(m, lm, c, lq, out, depth + 1);
+        }
+        return;
+      }
+    }
+    out.push_back(Crossing{along(p, q, 0.5 * (lo + hi)), lp, lq});
+  }
+
+  /// The changes along the side from corner `from` to corner `to` of a part (labels lf, lt),
+  /// looking at `side_samples` points in between (and, on an edge of the mesh, at every place
+  /// where the windows kept on that edge change); the points looked at go to `seen`.
+  void changes_on_side(const Face_point& from, int lf, const Face_point& to, int lt, std::vector<Crossing>& out,
+                       std::vector<std::pair<Face_point, int>>& seen) const
+  {
+    std::vector<double> cuts;
+    edge_window_cuts(from, to, cuts);
+    for(int i = 1; i < side_samples; ++i)
+      cuts.push_back(double(i) / side_samples);
+    std::sort(cuts.begin(), cuts.end());
+    Face_point previous = from;
+    int lprevious = lf;
+    for(double t : cuts) {
+      if(!(t > 0 && t < 1))
+        continue;
+      const Face_point p = along(from, to, t);
+      const int lp = label(p);
+      seen.emplace_back(p, lp);
+      find_changes(previous, lprevious, p, lp, out);
+      previous = p;
+      lprevious = lp;
+    }
+    find_changes(previous, lprevious, to, lt, out);
+  }
+
+  /// Where, between `from` and `to` (both on one edge of the mesh), a window kept on that edge
+  /// starts or ends (as parameters in (0, 1) of the side); none when the side is inside a face.
+  void edge_window_cuts(const Face_point& from, const Face_point& to, std::vector<double>& cuts) const
+  {
+    for(int k = 0; k < 3; ++k) {
+      const std::size_t z = std::size_t((k + 2) % 3); // the coordinate that is 0 on half-edge 3f+k
+      if(from.b[z] != 0 || to.b[z] != 0)
+        continue;
+      const int h = 3 * from.face + k;
+      const double s0 = from.b[std::size_t((k + 1) % 3)], s1 = to.b[std::size_t((k + 1) % 3)];
+      if(s0 == s1)
+        return;
+      const double length = m_mesh.frame[h].length;
+      for(const Edge_window* w = m_windows.windows_of_edge(h); w; w = w->next) {
+        const Window_geometry g = m_windows.in_frame_of(*w, h);
+        for(double x : {g.b0, g.b1})
+          cuts.push_back((x / length - s0) / (s1 - s0));
+      }
+      return;
+    }
+  }
+
+  void handle_triangle(const std::array<Face_point, 3>& corner, int depth)
+  {
+    std::vector<std::pair<Face_point, int>> seen; // boundary points and their cells
+    for(std::size_t k = 0; k < 3; ++k)
+      seen.emplace_back(corner[k], label(corner[k]));
+    std::vector<Crossing> crossings;
+    for(std::size_t k = 0; k < 3; ++k)
+      changes_on_side(corner[k], seen[k].second, corner[(k + 1) % 3], seen[(k + 1) % 3].second, crossings, seen);
+    drop_blips(crossings);
+    // A source inside whose cell does not reach the boundary is a cell the boundary cannot show.
+    bool hidden_cell = false;
+    for(const auto& s : *m_face_sources)
+      if(holds(corner, s.second) && std::none_of(seen.begin(), seen.end(), [&](const auto& x) { return x.second == s.first; }))
+        hidden_cell = true;
+    const std::size_t n = crossings.size();
+    if(!hidden_cell) {
+      if(n == 0)
+        return;
+      if(n == 2 && crossings[0].after == crossings[1].before && crossings[1].after == crossings[0].before) {
+        add_piece(crossings[0].point, crossings[1].point, crossings[0].before, crossings[0].after, -1);
+        return;
+      }
+      if(n == 4) { // one cell on two opposite arcs of the boundary, and two other cells: two bisectors
+        for(std::size_t i = 0; i < 2; ++i) {
+          // the cells after crossings i and i+2 (cyclic arcs i and i+2)
+          const int x = crossings[i].after, y = crossings[i + 1].after, z = crossings[(i + 3) % 4].after;
+          if(x == crossings[i + 2].after && y != z) {
+            add_piece(crossings[i + 1].point, crossings[i + 2].point, y, x, -1);
+            add_piece(crossings[(i + 3) % 4].point, crossings[i].point, z, x, -1);
+            return;
+          }
+        }
+      }
+      if(n == 3 && chain_of_three(crossings)) {
+        int v = find_voronoi_vertex(crossings, seen);
+        if(v < 0 && size_of(corner) <= vertex_size) // cut down to round-off around the vertex
+          v = add_vertex(corner, crossings);
+        if(v >= 0) {
+          for(const Crossing& c : crossings)
+            add_piece(c.point, m_vertices[std::size_t(v)].location, c.before, c.after, v);
+          return;
+        }
+      }
+    }
+    const bool three_cells = !hidden_cell && n == 3 && chain_of_three(crossings);
+    if(depth >= (three_cells ? max_vertex_depth : max_depth)) {
+#ifdef VORONOI_DEBUG
+      std::cerr << "unresolved face " << corner[0].face << " n=" << n << " hidden=" << hidden_cell << ":";
+      for(const Crossing& c : crossings) std::cerr << " " << c.before << ">" << c.after;
+      std::cerr << "\n";
+#endif
+      ++m_unresolved;
+      return;
+    }
+    // cut in four: the corners and the middles of the sides
+    std::array<Face_point, 3> middle;
+    for(std::size_t k = 0; k < 3; ++k)
+      middle[k] = along(corner[k], corner[(k + 1) % 3], 0.5);
+    for(std::size_t k = 0; k < 3; ++k)
+      handle_triangle({corner[k], middle[k], middle[(k + 2) % 3]}, depth + 1);
+    handle_triangle(middle, depth + 1);
+  }
+
+  /// Removes pairs of neighbouring changes there and back (a to b, then b to a) closer than
+  /// round-off: the sides of a part that meet on a bisector, or a sample that fell on one.
+  static void drop_blips(std::vector<Crossing>& c)
+  {
+    for(bool dropped = true; dropped && c.size() >= 2;) {
+      dropped = false;
+      for(std::size_t i = 0; i < c.size() && !dropped; ++i) {
+        const std::size_t j = (i + 1) % c.size();
+        if(c[i].before != c[j].after || c[i].after != c[j].before)
+          continue;
+        double gap = 0;
+        for(std::size_t k = 0; k < 3; ++k)
+          gap = std::max(gap, std::abs(c[i].point.b[k] - c[j].point.b[k]));
+        if(gap <= blip) {
+          c.erase(c.begin() + std::ptrdiff_t(std::max(i, j)));
+          c.erase(c.begin() + std::ptrdiff_t(std::min(i, j)));
+          dropped = true;
+        }
+      }
+    }
+  }
+
+  /// Whether point p of the face lies in the part (corners c, points of the same face).
+  static bool holds(const std::array<Face_point, 3>& c, const Face_point& p)
+  {
+    // barycentric coordinates are affine: p's signs against each side of the part, in (b1, b2)
+    auto cross = [](const Face_point& o, const Face_point& a, const Face_point& b) {
+      return (a.b[1] - o.b[1]) * (b.b[2] - o.b[2]) - (a.b[2] - o.b[2]) * (b.b[1] - o.b[1]);
+    };
+    const double s0 = cross(c[0], c[1], p), s1 = cross(c[1], c[2], p), s2 = cross(c[2], c[0], p);
+    return (s0 >= 0 && s1 >= 0 && s2 >= 0) || (s0 <= 0 && s1 <= 0 && s2 <= 0);
+  }
+
+  static bool chain_of_three(const std::vector<Crossing>& c)
+  {
+    return c[0].after == c[1].before && c[1].after == c[2].before && c[2].after == c[0].before &&
+           c[0].before != c[1].before && c[1].before != c[2].before && c[0].before != c[2].before;
+  }
+
+  /// The point where the three cells of `crossings` meet inside the part: a triangle with a
+  /// corner in each cell (points of the boundary, `seen`) is shrunk, keeping a quarter whose
+  /// corners are still in the three cells, down to round-off. -1 if it does not get there.
+  int find_voronoi_vertex(const std::vector<Crossing>& crossings, const std::vector<std::pair<Face_point, int>>& seen)
+  {
+    const std::array<int, 3> wanted{{crossings[0].before, crossings[1].before, crossings[2].before}};
+    auto all_three = [&](const std::array<int, 3>& l) { return std::is_permutation(l.begin(), l.end(), wanted.begin()); };
+    std::array<Face_point, 3> t;
+    std::array<int, 3> l;
+    for(std::size_t k = 0; k < 3; ++k) {
+      const auto in_cell = std::find_if(seen.begin(), seen.end(), [&](const auto& x) { return x.second == wanted[k]; });
+      if(in_cell == seen.end())
+        return -1;
+      t[k] = in_cell->first;
+      l[k] = wanted[k];
+    }
+    const double start_size = size_of(t);
+    for(int i = 0; i < 200 && size_of(t) > 1e-13 * start_size; ++i) {
+      std::array<Face_point, 3> middle;
+      std::array<int, 3> lm;
+      for(std::size_t k = 0; k < 3; ++k) {
+        middle[k] = along(t[k], t[(k + 1) % 3], 0.5);
+        lm[k] = label(middle[k]);
+      }
+      const std::array<std::array<Face_point, 3>, 4> parts{
+        {{{t[0], middle[0], middle[2]}}, {{middle[0], t[1], middle[1]}}, {{middle[2], middle[1], t[2]}}, middle}};
+      const std::array<std::array<int, 3>, 4> labels{
+        {{{l[0], lm[0], lm[2]}}, {{lm[0], l[1], lm[1]}}, {{lm[2], lm[1], l[2]}}, lm}};
+      std::size_t k = 0;
+      while(k < 4 && !all_three(labels[k]))
+        ++k;
+      if(k == 4)
+        return -1;
+      t = parts[k];
+      l = labels[k];
+    }
+    if(!(size_of(t) <= 1e-13 * start_size))
+      return -1;
+    return add_vertex(t, crossings);
+  }
+
+  /// A Voronoi vertex of the cells of `crossings` at the middle of the tiny triangle t.
+  int add_vertex(const std::array<Face_point, 3>& t, const std::vector<Crossing>& crossings)
+  {
+    Voronoi_vertex_found v;
+    v.location.face = t[0].face;
+    for(std::size_t k = 0; k < 3; ++k)
+      v.location.b[k] = (t[0].b[k] + t[1].b[k] + t[2].b[k]) / 3;
+    v.sources = {{crossings[0].before, crossings[1].before, crossings[2].before}};
+    std::sort(v.sources.begin(), v.sources.end());
+    m_vertices.push_back(v);
+    return int(m_vertices.size()) - 1;
+  }
+
+  /// The largest barycentric extent of a part (a size that shrinks by half at each quartering).
+  static double size_of(const std::array<Face_point, 3>& t)
+  {
+    double size = 0;
+    for(std::size_t k = 0; k < 3; ++k)
+      for(std::size_t j = 0; j < 3; ++j)
+        size = std::max(size, std::abs(t[k].b[j] - t[(k + 1) % 3].b[j]));
+    return size;
+  }
+
+  /// A bisector from p to q between cells a and b, with inner points found across the chord.
+  void add_piece(const Face_point& p, const Face_point& q, int a, int b, int vertex_at_q)
+  {
+    Bisector_piece piece;
+    piece.first_source = std::min(a, b);
+    piece.second_source = std::max(a, b);
+    piece.points.push_back(p);
+    refine(p, q, a, b, 0, piece.points);
+    piece.points.push_back(q);
+    piece.end_vertex = vertex_at_q;
+    m_pieces.push_back(std::move(piece));
+  }
+
+  /// Inner points of the bisector between p and q: from the middle of the chord, across it (in
+  /// the face's plane), to the change from a to b; recursively while the bisector bends.
+  void refine(const Face_point& p, const Face_point& q, int a, int b, int depth, std::vector<Face_point>& out) const
+  {
+    if(depth == refine_depth)
+      return;
+    const Face_point m = along(p, q, 0.5);
+    // the chord in the plane of the face: corner 0 at the origin, corner 1 on +x
+    const Halfedge_frame& f = m_mesh.frame[3 * p.face];
+    auto to_plane = [&](const Face_point& x) {
+      return std::array<double, 2>{{x.b[1] * f.length + x.b[2] * f.apex_x, x.b[2] * f.apex_y}};
+    };
+    auto from_plane = [&](double x, double y) {
+      Face_point r;
+      r.face = p.face;
+      r.b[2] = y / f.apex_y;
+      r.b[1] = (x - r.b[2] * f.apex_x) / f.length;
+      r.b[0] = 1 - r.b[1] - r.b[2];
+      return r;
+    };
+    const auto pp = to_plane(p), qq = to_plane(q), mm = to_plane(m);
+    const double dx = qq[0] - pp[0], dy = qq[1] - pp[1];
+    const double chord = std::sqrt(dx * dx + dy * dy);
+    if(!(chord > 1e-9 * f.length))
+      return;
+    // across the chord, half its length each way, as far as the face goes
+    const double nx = -dy / chord, ny = dx / chord;
+    auto inside = [](const Face_point& x) { return x.b[0] >= 0 && x.b[1] >= 0 && x.b[2] >= 0; };
+    Face_point s0 = m, s1 = m;
+    for(double reach = 0.5 * chord; reach > 1e-3 * chord; reach *= 0.5) {
+      const Face_point c0 = from_plane(mm[0] - reach * nx, mm[1] - reach * ny);
+      const Face_point c1 = from_plane(mm[0] + reach * nx, mm[1] + reach * ny);
+      if(inside(c0) && inside(c1)) {
+        s0 = c0;
+        s1 = c1;
+        break;
+      }
+    }
+    const int l0 = label(s0), l1 = label(s1);
+    if(!((l0 == a && l1 == b) || (l0 == b && l1 == a)))
+      return; // the bisector leaves the band here: the chord's ends are kept as they are
+    std::vector<Crossing> found;
+    find_changes(s0, l0, s1, l1, found);
+    if(found.size() != 1)
+      return;
+    const Face_point x = found[0].point;
+    refine(p, x, a, b, depth + 1, out);
+    out.push_back(x);
+    refine(x, q, a, b, depth + 1, out);
+  }
+
+  static constexpr int side_samples = 4;
+  static constexpr double blip = 1e-9; // in barycentric coordinates
+  static constexpr int refine_depth = 2;
+
+  const Mesh_cache& m_mesh;
+  const Edge_window_store& m_windows;
+  const Geodesic_path_tracer& m_tracer;
+  const std::vector<std::pair<int, Face_point>>* m_face_sources = nullptr; // the face-point sources of the face
+  std::vector<Bisector_piece> m_pieces;
+  std::vector<Voronoi_vertex_found> m_vertices;
+  std::size_t m_unresolved = 0;
+};
+
+/// Ends of pieces that lie at a Voronoi vertex of their two cells (within `tolerance`: a part
+/// cut down near a vertex leaves short pieces that end there) become that vertex; pieces shorter
+/// than `tolerance` from end to end are dropped.
+inline void attach_to_vertices(std::vector<Bisector_piece>& pieces, std::vector<std::array<double, 3>>& first_point,
+                               std::vector<std::array<double, 3>>& last_point,
+                               const std::vector<Voronoi_vertex_found>& vertices,
+                               const std::vector<std::array<double, 3>>& vertex_point, double tolerance)
+{
+  auto near = [&](const std::array<double, 3>& a, const std::array<double, 3>& b) {
+    return std::abs(a[0] - b[0]) <= tolerance && std::abs(a[1] - b[1]) <= tolerance && std::abs(a[2] - b[2]) <= tolerance;
+  };
+  std::size_t kept = 0;
+  for(std::size_t i = 0; i < pieces.size(); ++i) {
+    Bisector_piece& p = pieces[i];
+    if(near(first_point[i], last_point[i]))
+      continue;
+    for(std::size_t v = 0; v < vertices.size(); ++v) {
+      const std::array<int, 3>& s = vertices[v].sources;
+      const bool of_both = std::count(s.begin(), s.end(), p.first_source) && std::count(s.begin(), s.end(), p.second_source);
+      if(!of_both)
+        continue;
+      if(p.start_vertex < 0 && near(first_point[i], vertex_point[v]))
+        p.start_vertex = int(v);
+      if(p.end_vertex < 0 && near(last_point[i], vertex_point[v]))
+        p.end_vertex = int(v);
+    }
+    if(p.start_vertex >= 0 && p.start_vertex == p.end_vertex)
+      continue;
+    if(kept != i) {
+      pieces[kept] = std::move(p);
+      first_point[kept] = first_point[i];
+      last_point[kept] = last_point[i];
+    }
+    ++kept;
+  }
+  pieces.resize(kept);
+  first_point.resize(kept);
+  last_point.resize(kept);
+}
+
+/// The pieces joined into polylines: pieces of the same two cells whose ends meet (within
+/// `tolerance`, in space) are one curve; a curve ends at a Voronoi vertex, at a border, or closes.
+/// Returns, per polyline, the indices of its pieces in order and whether each is reversed.
+inline std::vector<std::vector<std::pair<std::size_t, bool>>>
+join_pieces(const std::vector<Bisector_piece>& pieces, const std::vector<std::array<double, 3>>& first_point,
+            const std::vector<std::array<double, 3>>& last_point, double tolerance)
+{
+  const std::size_t n = pieces.size();
+  // ends: 2i the start of piece i, 2i+1 its end; a Voronoi vertex end joins nothing
+  std::vector<std::size_t> order;
+  for(std::size_t e = 0; e < 2 * n; ++e)
+    if((e % 2 == 1 ? pieces[e / 2].end_vertex : pieces[e / 2].start_vertex) < 0)
+      order.push_back(e);
+  auto at = [&](std::size_t e) -> const std::array<double, 3>& { return e % 2 ? last_point[e / 2] : first_point[e / 2]; };
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return at(a)[0] < at(b)[0]; });
+  const std::size_t none = std::size_t(-1);
+  std::vector<std::size_t> mate(2 * n, none);
+  for(std::size_t i = 0; i < order.size(); ++i) {
+    const std::size_t a = order[i];
+    for(std::size_t j = i + 1; j < order.size() && at(order[j])[0] - at(a)[0] <= tolerance && mate[a] == none; ++j) {
+      const std::size_t b = order[j];
+      const Bisector_piece &pa = pieces[a / 2], &pb = pieces[b / 2];
+      if(mate[b] != none || a / 2 == b / 2 || pa.first_source != pb.first_source || pa.second_source != pb.second_source)
+        continue;
+      const std::array<double, 3>&x = at(a), &y = at(b);
+      if(std::abs(x[1] - y[1]) <= tolerance && std::abs(x[2] - y[2]) <= tolerance) {
+        mate[a] = b;
+        mate[b] = a;
+      }
+    }
+  }
+  std::vector<std::vector<std::pair<std::size_t, bool>>> lines;
+  std::vector<char> used(n, 0);
+  for(std::size_t start = 0; start < n; ++start) {
+    if(used[start])
+      continue;
+    // walk back from the start of this piece to the first piece of its curve (or around a loop)
+    std::size_t piece = start, entry = 2 * start; // the end by which the walk enters `piece`
+    for(std::size_t steps = 0; steps < n && mate[entry] != none && mate[entry] / 2 != start; ++steps) {
+      const std::size_t other = mate[entry];
+      piece = other / 2;
+      entry = other ^ 1; // leave by the far end
+    }
+    if(mate[entry] != none && mate[entry] / 2 == start) { // a loop: begin at `start`
+      piece = start;
+      entry = 2 * start;
+    }
+    // walk forward: enter each piece by `entry`, leave by the other end
+    std::vector<std::pair<std::size_t, bool>> line;
+    for(std::size_t steps = 0; steps <= n && !used[piece]; ++steps) {
+      used[piece] = 1;
+      const bool reversed = entry % 2 == 1;
+      line.emplace_back(piece, reversed);
+      const std::size_t exit = entry ^ 1;
+      if(mate[exit] == none)
+        break;
+      piece = mate[exit] / 2;
+      entry = mate[exit];
+    }
+    lines.push_back(std::move(line));
+  }
+  return lines;
+}
+
+} // namespace internal
+} // namespace Geodesics_3
+} // namespace CGAL_ext
+
+#endif // CGAL_EXT_GEODESICS_3_INTERNAL_GEODESIC_VORONOI_H

@@ -1,0 +1,191 @@
+// Copyright (c) 2026 The CGAL_ext geodesics developers.
+#ifndef CGAL_EXT_GEODESIC_VORONOI_DIAGRAM_H
+#define CGAL_EXT_GEODESIC_VORONOI_DIAGRAM_H
+
+/// \file geodesic_voronoi_diagram.h
+/// The exact geodesic Voronoi diagram of points of a triangle mesh, cut across faces, and its
+/// dual (the geodesic Delaunay graph).
+
+#include <CGAL_ext/Geodesics_3/Geodesic_algorithm.h>
+#include <CGAL_ext/Geodesics_3/Geodesic_error.h>
+#include <CGAL_ext/Geodesics_3/Geodesic_statistics.h>
+#include <CGAL_ext/Geodesics_3/Named_function_parameters.h>
+#include <CGAL_ext/Geodesics_3/internal/Geodesic_path_tracer.h>
+#include <CGAL_ext/Geodesics_3/internal/Geodesic_setup.h>
+#include <CGAL_ext/Geodesics_3/internal/Geodesic_voronoi.h>
+#include <CGAL_ext/Geodesics_3/internal/MMP_solver.h>
+
+#include <CGAL/tags.h>
+
+#include <array>
+#include <cstddef>
+#include <set>
+#include <utility>
+#include <vector>
+
+namespace CGAL_ext {
+
+/// \ingroup PkgGeodesics3Ref
+/// The geodesic Voronoi diagram of sources on a triangle mesh, as `geodesic_voronoi_diagram()`
+/// returns it. Sources are numbered in the order they were given.
+template <class TriangleMesh, class Point_3>
+struct Geodesic_voronoi_diagram
+{
+  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
+  /// a point of a face: barycentric coordinates in the order of its vertices from `source(halfedge(f))`
+  typedef std::pair<face_descriptor, std::array<double, 3>> Face_location;
+
+  /// a point of the diagram: where it lies on the surface, and where in space
+  struct Point
+  {
+    Face_location location;
+    Point_3 point;
+  };
+  /// a curve where two cells meet: every point is as far from both sources, and no other
+  /// source is nearer
+  struct Bisector
+  {
+    std::size_t first_source, second_source; ///< the two sources, `first_source < second_source`
+    std::vector<Point> points;               ///< a polyline across the faces it cuts
+  };
+  /// a point where three cells meet
+  struct Vertex
+  {
+    Point point;
+    std::array<std::size_t, 3> sources; ///< increasing
+  };
+
+  std::vector<std::size_t> vertex_cell;   ///< by vertex index: the nearest source, or `no_source`
+  std::vector<double> vertex_distance;     ///< by vertex index: the distance to it (`+infinity` if none)
+  std::vector<Bisector> bisectors;
+  std::vector<Vertex> vertices;
+  /// the dual graph (geodesic Delaunay): the pairs of sources whose cells share a bisector,
+  /// each once, `first < second`, sorted
+  std::vector<std::pair<std::size_t, std::size_t>> dual_edges;
+  /// the triples of sources whose cells meet at a Voronoi vertex, each once, sorted
+  std::vector<std::array<std::size_t, 3>> dual_triangles;
+  /// parts of faces where more cells meet than the construction could tell apart (0 on every
+  /// mesh of the tests); each is left out rather than guessed
+  std::size_t unresolved_parts = 0;
+};
+
+/// \ingroup PkgGeodesics3Ref
+/// computes the geodesic Voronoi diagram of `sources` on `tm`: the cell of every vertex (its
+/// nearest source), the bisectors cut across faces, the Voronoi vertices where three cells meet,
+/// and the dual graph.
+///
+/// The diagram is read from one exact multi-source propagation (FWP-MMP, or PMMP with
+/// `CGAL::Parallel_tag`), whose windows give the distance and nearest source at any point of
+/// the surface. In each face the nearest source is followed along the boundary (each edge is
+/// cut where its windows change, and every change of the nearest source is located by bisection
+/// to round-off); a face crossed by two cells holds one bisector, whose inner points are found
+/// the same way; a face where three cells meet holds a Voronoi vertex, found by shrinking a
+/// triangle with a corner in each cell to round-off; a face with more is cut in four, up to five
+/// times. Every point reported is as far from its two (or three) sources as the solver's
+/// round-off allows. A cell that crosses an edge or a face without containing any vertex is found
+/// too: it shows on the windows of the edge, or as a source inside the face.
+///
+/// \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or `CGAL::Parallel_if_available_tag`
+/// \tparam TriangleMesh a model of `FaceListGraph`
+/// \tparam Sources a vertex, a face location, or a range of either (as for `geodesic_distances()`)
+///
+/// \param tm the triangle mesh
+/// \param sources the sites of the diagram; a duplicated source has an empty cell
+/// \param np optional named parameters: `number_of_threads`, `batch_size`, `glued_vertices`, and
+///        CGAL's `vertex_point_map`, `vertex_index_map`, `face_index_map`, as for `geodesic_distances()`
+/// \return the diagram
+///
+/// \throws Geodesic_error for what `geodesic_distances()` throws, when there is no source, and for
+///         `approximation`, `stop_vertices`, `max_distance` or an `algorithm` other than the MMP family
+template <class ConcurrencyTag = CGAL::Sequential_tag, class TriangleMesh, class Sources,
+          class NamedParameters = parameters::Default_named_parameters_type>
+Geodesic_voronoi_diagram<TriangleMesh, typename boost::property_traits<
+                                         Geodesics_3::internal::Vertex_point_map_of<TriangleMesh, NamedParameters>>::value_type>
+geodesic_voronoi_diagram(const TriangleMesh& tm, const Sources& sources,
+                         const NamedParameters& np = parameters::default_values())
+{
+  namespace internal = Geodesics_3::internal;
+  using parameters::is_default_parameter;
+  constexpr bool parallel = internal::is_parallel_tag<ConcurrencyTag>();
+  typedef internal::Vertex_point_map_of<TriangleMesh, NamedParameters> Vertex_point_map;
+  typedef typename boost::property_traits<Vertex_point_map>::value_type Point_3;
+  typedef Geodesic_voronoi_diagram<TriangleMesh, Point_3> Diagram;
+
+  if constexpr(!is_default_parameter<NamedParameters, internal_np::max_distance_t>::value)
+    throw Geodesic_error("a Voronoi diagram takes no max_distance: every cell is whole");
+  const internal::Solver_settings settings = internal::read_solver_settings(np, FWP_MMP);
+  if(settings.algorithm == VTP)
+    throw Geodesic_error("a Voronoi diagram is read from the windows of the MMP family, got algorithm VTP");
+  const internal::Mesh_setup<TriangleMesh, Vertex_point_map> mesh(tm, np);
+  const internal::Mesh_cache& cache = mesh.cache();
+  internal::MMP_solver solver(cache, settings, parallel);
+  for(const internal::Source_point& s : mesh.source_points(sources))
+    solver.add_source(s);
+  internal::run_solver<parallel>(solver, settings.number_of_threads);
+  const internal::Geodesic_path_tracer tracer(solver.windows(), solver.distances(), solver.nearest_sources(),
+                                              solver.sources(), solver.max_distance());
+  internal::Voronoi_builder builder(cache, solver.windows(), tracer);
+  builder.run(solver.sources());
+
+  Diagram diagram;
+  const std::vector<int>& nearest = solver.nearest_sources();
+  for(std::size_t v = 0; v < cache.number_of_mesh_vertices; ++v) {
+    diagram.vertex_cell.push_back(nearest[v] < 0 ? no_source : std::size_t(nearest[v]));
+    diagram.vertex_distance.push_back(mesh.to_mesh_unit(solver.distances()[v]));
+  }
+  auto point_of = [&](const internal::Face_point& p) {
+    typename Diagram::Point out;
+    const std::array<double, 3> x = builder.position(p);
+    int f = p.face;
+    std::array<double, 3> b = p.b;
+    if(cache.is_face_changed(p.face)) // a face the cache split or removed: the caller's face
+      cache.mesh_face_point(p.face, x, f, b);
+    out.location = typename Diagram::Face_location(mesh.face_of(f), b);
+    out.point = Point_3(mesh.to_mesh_unit(x[0]), mesh.to_mesh_unit(x[1]), mesh.to_mesh_unit(x[2]));
+    return out;
+  };
+
+  std::vector<internal::Bisector_piece>& pieces = builder.pieces();
+  std::vector<std::array<double, 3>> first(pieces.size()), last(pieces.size()), vertex_point;
+  for(std::size_t i = 0; i < pieces.size(); ++i) {
+    first[i] = builder.position(pieces[i].points.front());
+    last[i] = builder.position(pieces[i].points.back());
+  }
+  for(const internal::Voronoi_vertex_found& v : builder.vertices())
+    vertex_point.push_back(builder.position(v.location));
+  const double tolerance = 1e-9 * cache.mean_edge_length;
+  internal::attach_to_vertices(pieces, first, last, builder.vertices(), vertex_point, tolerance);
+  std::set<std::pair<std::size_t, std::size_t>> pairs;
+  for(const auto& line : internal::join_pieces(pieces, first, last, tolerance)) {
+    typename Diagram::Bisector bisector;
+    const internal::Bisector_piece& head = pieces[line.front().first];
+    bisector.first_source = std::size_t(head.first_source);
+    bisector.second_source = std::size_t(head.second_source);
+    for(const auto& [index, reversed] : line) {
+      const std::vector<internal::Face_point>& points = pieces[index].points;
+      // the first point of a piece after the first is the last of the one before
+      const std::size_t skip = bisector.points.empty() ? 0 : 1;
+      for(std::size_t k = skip; k < points.size(); ++k)
+        bisector.points.push_back(point_of(reversed ? points[points.size() - 1 - k] : points[k]));
+    }
+    pairs.insert({bisector.first_source, bisector.second_source});
+    diagram.bisectors.push_back(std::move(bisector));
+  }
+  std::set<std::array<std::size_t, 3>> triples;
+  for(const internal::Voronoi_vertex_found& v : builder.vertices()) {
+    typename Diagram::Vertex vertex;
+    vertex.point = point_of(v.location);
+    for(std::size_t k = 0; k < 3; ++k)
+      vertex.sources[k] = std::size_t(v.sources[k]);
+    triples.insert(vertex.sources);
+    diagram.vertices.push_back(vertex);
+  }
+  diagram.dual_edges.assign(pairs.begin(), pairs.end());
+  diagram.dual_triangles.assign(triples.begin(), triples.end());
+  diagram.unresolved_parts = builder.unresolved();
+  return diagram;
+}
+
+} // namespace CGAL_ext
+
+#endif // CGAL_EXT_GEODESIC_VORONOI_DIAGRAM_H

@@ -1,0 +1,193 @@
+// The exact geodesic Voronoi diagram: bisector points equidistant from their two sources (by
+// single-source MMP queries at those surface points) with no third source nearer, Voronoi
+// vertices equidistant from three, the dual graph; the analytic answer on a flat square; a cell
+// that holds no vertex of the mesh.
+#include "support/analytic_surfaces.h"
+#include "support/checks.h"
+#include "support/solve.h"
+
+#include <CGAL_ext/Surface_mesh_geodesic_paths.h>
+#include <CGAL_ext/geodesic_voronoi_diagram.h>
+
+#include <memory>
+#include <set>
+#include <vector>
+
+namespace {
+
+using namespace test_support;
+
+typedef CGAL_ext::Surface_mesh_geodesic_paths<Mesh> Paths;
+
+/// One single-source build per source: the distance from each source alone, anywhere.
+std::vector<std::unique_ptr<Paths>> single_source_paths(const Mesh& m, const std::vector<Face_location>& sources)
+{
+  std::vector<std::unique_ptr<Paths>> single;
+  for(const Face_location& s : sources) {
+    single.push_back(std::make_unique<Paths>(m));
+    single.back()->add_source(s);
+    single.back()->build();
+  }
+  return single;
+}
+
+template <class Diagram>
+void expect_exact_diagram(const Mesh& m, const std::vector<Face_location>& sources, const Diagram& d,
+                          const std::string& label)
+{
+  const double tolerance = 1e-9 * bbox_diagonal(m);
+  const auto single = single_source_paths(m, sources);
+  EXPECT_EQ(d.unresolved_parts, 0u) << label;
+  std::set<std::pair<std::size_t, std::size_t>> pairs;
+  std::size_t points = 0;
+  for(const auto& b : d.bisectors) {
+    ASSERT_LT(b.first_source, b.second_source) << label;
+    pairs.insert({b.first_source, b.second_source});
+    for(const auto& p : b.points) {
+      ++points;
+      const double da = single[b.first_source]->distance(p.location);
+      const double db = single[b.second_source]->distance(p.location);
+      EXPECT_NEAR(da, db, tolerance) << label << ": bisector " << b.first_source << "-" << b.second_source;
+      for(std::size_t k = 0; k < sources.size(); ++k)
+        if(k != b.first_source && k != b.second_source)
+          EXPECT_GE(single[k]->distance(p.location), std::min(da, db) - tolerance) << label << ": source " << k;
+      EXPECT_LE(std::sqrt(CGAL::squared_distance(p.point, location_point(m, p.location))), tolerance) << label;
+    }
+  }
+  EXPECT_GT(points, 0u) << label;
+  const std::vector<std::pair<std::size_t, std::size_t>> bisector_pairs(pairs.begin(), pairs.end());
+  EXPECT_EQ(bisector_pairs, d.dual_edges) << label;
+  std::set<std::array<std::size_t, 3>> triples;
+  for(const auto& v : d.vertices) {
+    triples.insert(v.sources);
+    const double a = single[v.sources[0]]->distance(v.point.location);
+    EXPECT_NEAR(single[v.sources[1]]->distance(v.point.location), a, tolerance) << label;
+    EXPECT_NEAR(single[v.sources[2]]->distance(v.point.location), a, tolerance) << label;
+    for(std::size_t k = 0; k < sources.size(); ++k)
+      EXPECT_GE(single[k]->distance(v.point.location), a - tolerance) << label << ": source " << k;
+  }
+  const std::vector<std::array<std::size_t, 3>> vertex_triples(triples.begin(), triples.end());
+  EXPECT_EQ(vertex_triples, d.dual_triangles) << label;
+  // the cells of the vertices are the labels of one propagation
+  auto labels = get(CGAL::dynamic_vertex_property_t<std::size_t>(), m);
+  solve(m, sources, CGAL_ext::parameters::vertex_source_map(labels).algorithm(CGAL_ext::FWP_MMP));
+  for(Vertex v : vertices(m))
+    EXPECT_EQ(d.vertex_cell[v.idx()], get(labels, v)) << label << ": vertex " << v.idx();
+}
+
+TEST(Geodesic_voronoi, bisectors_and_vertices_are_exact_on_real_meshes)
+{
+  for(const char* name : {"elephant", "mushroom"}) {
+    const Mesh& m = test_mesh(name);
+    std::vector<Face_location> sources;
+    for(Vertex v : spread_vertices(m, 5, 3))
+      sources.push_back(corner_location(m, v));
+    sources.push_back(location(m.number_of_faces() / 3, 0.3, 0.3));
+    const auto d = CGAL_ext::geodesic_voronoi_diagram(m, sources);
+    expect_exact_diagram(m, sources, d, name);
+    EXPECT_GE(d.vertices.size(), 2u) << name;
+    // PMMP gives the same diagram for every thread count
+    for(int threads : {1, 2}) {
+      const auto p = CGAL_ext::geodesic_voronoi_diagram<CGAL::Parallel_tag>(
+        m, sources, CGAL_ext::parameters::number_of_threads(threads));
+      EXPECT_EQ(p.dual_edges, d.dual_edges) << name << ", " << threads << " threads";
+      EXPECT_EQ(p.dual_triangles, d.dual_triangles) << name << ", " << threads << " threads";
+    }
+  }
+}
+
+// On a flat square the bisectors are straight: every point is at equal Euclidean distance from
+// its two sources, and three sources meet at their circumcentre.
+TEST(Geodesic_voronoi, a_flat_square_has_straight_bisectors_and_the_circumcentre)
+{
+  const Mesh m = make_grid(11, 0.1, 0.2);
+  const std::vector<Point> site{Point(0.21, 0.23, 0), Point(0.77, 0.31, 0), Point(0.45, 0.81, 0)};
+  std::vector<Face_location> sources;
+  for(const Point& s : site) {
+    // the face holding s, and its barycentric coordinates
+    for(Face f : faces(m)) {
+      const auto c = face_corners(m, f);
+      const K::Point_2 a(m.point(c[0]).x(), m.point(c[0]).y()), b(m.point(c[1]).x(), m.point(c[1]).y()),
+        e(m.point(c[2]).x(), m.point(c[2]).y()), p(s.x(), s.y());
+      const double area = CGAL::area(a, b, e);
+      const double l0 = CGAL::area(p, b, e) / area, l1 = CGAL::area(a, p, e) / area, l2 = 1 - l0 - l1;
+      if(l0 >= 0 && l1 >= 0 && l2 >= 0) {
+        sources.emplace_back(f, Barycentric{{l0, l1, l2}});
+        break;
+      }
+    }
+  }
+  ASSERT_EQ(sources.size(), 3u);
+  for(std::size_t count : {2, 3}) {
+    const std::vector<Face_location> some(sources.begin(), sources.begin() + std::ptrdiff_t(count));
+    const auto d = CGAL_ext::geodesic_voronoi_diagram(m, some);
+    expect_exact_diagram(m, some, d, std::to_string(count) + " sources");
+    for(const auto& b : d.bisectors)
+      for(const auto& p : b.points)
+        EXPECT_NEAR(std::sqrt(CGAL::squared_distance(p.point, site[b.first_source])),
+                    std::sqrt(CGAL::squared_distance(p.point, site[b.second_source])), 1e-12);
+    if(count == 2) {
+      EXPECT_TRUE(d.vertices.empty());
+      EXPECT_EQ(d.bisectors.size(), 1u) << "one straight bisector across the square";
+    } else {
+      ASSERT_EQ(d.vertices.size(), 1u);
+      const Point centre = CGAL::circumcenter(site[0], site[1], site[2]);
+      EXPECT_LE(std::sqrt(CGAL::squared_distance(d.vertices[0].point.point, centre)), 1e-9);
+      EXPECT_EQ(d.bisectors.size(), 3u) << "three bisectors from the circumcentre";
+    }
+  }
+}
+
+// A face point at the middle of a face, with three others around it in the same face: its cell
+// is a small triangle inside the face, holding no vertex of the mesh, and is still found (three
+// bisectors around it, three Voronoi vertices, and its place in the dual graph).
+TEST(Geodesic_voronoi, a_cell_without_any_vertex_is_found)
+{
+  const Mesh m = make_grid(6, 0.2);
+  const Face f(7);
+  const std::vector<Face_location> sources{corner_location(m, Vertex(0)),
+                                           {f, Barycentric{{1. / 3, 1. / 3, 1. / 3}}},
+                                           {f, Barycentric{{0.4, 0.3, 0.3}}},
+                                           {f, Barycentric{{0.3, 0.4, 0.3}}},
+                                           {f, Barycentric{{0.3, 0.3, 0.4}}}};
+  const auto d = CGAL_ext::geodesic_voronoi_diagram(m, sources);
+  expect_exact_diagram(m, sources, d, "a cell inside a face");
+  EXPECT_EQ(std::count(d.vertex_cell.begin(), d.vertex_cell.end(), std::size_t(1)), 0) << "a cell without vertices";
+  for(std::size_t other : {2, 3, 4})
+    EXPECT_TRUE(std::count(d.dual_edges.begin(), d.dual_edges.end(), std::make_pair(std::size_t(1), other)))
+      << "cells 1 and " << other << " share a bisector";
+  std::size_t around = 0;
+  for(const auto& v : d.vertices)
+    around += v.sources[0] == 1 || v.sources[1] == 1;
+  EXPECT_EQ(around, 3u) << "three Voronoi vertices around the small cell";
+}
+
+// A point one snap (1e-12) from a vertex, on an edge, is as far as the vertex (within its
+// offset): the tracer once skipped the vertex there without snapping the point onto it.
+TEST(Geodesic_voronoi, a_point_at_the_snap_distance_from_a_vertex_is_measured_through_it)
+{
+  const Mesh& m = test_mesh("elephant");
+  Paths paths(m);
+  paths.add_source(Vertex(0));
+  paths.add_source(Vertex(1000));
+  paths.build();
+  for(Face f : {Face(3506), Face(100), Face(4000)}) {
+    const Vertex v = source(halfedge(f, m), m);
+    for(const Barycentric& b : {Barycentric{{1 - 1e-12, 1e-12, 0}}, Barycentric{{1 - 1e-12, 0, 1e-12}}})
+      EXPECT_NEAR(paths.distance(Face_location(f, b)), paths.distance(v), 1e-11) << "face " << f.idx();
+  }
+}
+
+TEST(Geodesic_voronoi, bad_requests_are_named)
+{
+  const Mesh& m = test_mesh("elephant");
+  EXPECT_TRUE(throws_geodesic_error([&] { CGAL_ext::geodesic_voronoi_diagram(m, std::vector<Vertex>{}); },
+                                    {"no source"}));
+  EXPECT_TRUE(throws_geodesic_error(
+    [&] { CGAL_ext::geodesic_voronoi_diagram(m, Vertex(0), CGAL_ext::parameters::algorithm(CGAL_ext::VTP)); }, {"VTP"}));
+  EXPECT_TRUE(throws_geodesic_error(
+    [&] { CGAL_ext::geodesic_voronoi_diagram(m, Vertex(0), CGAL_ext::parameters::max_distance(1.)); }, {"max_distance"}));
+  EXPECT_TRUE(throws_geodesic_error([&] { CGAL_ext::geodesic_voronoi_diagram(m, Vertex(9999)); }, {"out of range"}));
+}
+
+} // namespace
