@@ -10,6 +10,8 @@
 //                   [--threads N] --output FILE.npy|FILE.mtx|FILE.txt [--stats]
 //   geodesic sample MESH (--count N | --radius R) [--first V] [--algorithm vtp|pvtp|avtp|pavtp]
 //                   [--threads N] [--output FILE.txt] [--labels FILE.txt|FILE.ply] [--stats]
+//   geodesic voronoi MESH --source S[,S...] [--algorithm fwp-mmp|mmp|pmmp] [--threads N]
+//                    --output CELLS.txt|CELLS.ply [--bisectors FILE.obj|FILE.txt] [--dual FILE.obj] [--stats]
 //
 // MESH is an OFF, OBJ, PLY or STL file: triangles, quads, polygons, soups and non-manifold meshes
 // are made into the triangle mesh the library takes (CGAL_ext::polygon_soup_to_geodesic_mesh),
@@ -32,6 +34,7 @@
 #include "tool_solvers.h"
 #include "tool_stats.h"
 #include "tool_text.h"
+#include "tool_voronoi.h"
 
 #include <CGAL_ext/Geodesics_3/polyline_length.h>
 
@@ -176,6 +179,8 @@ int main(int argc, char** argv)
   add_matrix_command(app, matrix);
   Sample_options sample;
   add_sample_command(app, sample);
+  Voronoi_options voronoi;
+  add_voronoi_command(app, voronoi);
 
   try {
     app.parse(argc, argv);
@@ -201,6 +206,8 @@ int main(int argc, char** argv)
       return run_matrix(matrix);
     if(app.got_subcommand("sample"))
       return run_sample(sample);
+    if(app.got_subcommand("voronoi"))
+      return run_voronoi(voronoi);
   } catch(const std::exception& e) { // Tool_error, and the library's Geodesic_error
     std::cerr << "error: " << e.what() << std::endl;
   }

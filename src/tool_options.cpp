@@ -63,9 +63,9 @@ std::vector<std::string> split(const std::string& s, char delimiter)
 const char* const point_help = "a vertex id, or f:FACE:b0:b1:b2 (barycentric coordinates in the order of the "
                                "face's vertices in the file)";
 
-// The arguments every subcommand starts with: the mesh and the sources.
-template <class Sources>
-void add_mesh_and_sources(CLI::App& cmd, std::string& mesh, Sources& sources)
+} // namespace
+
+void add_mesh_and_sources(CLI::App& cmd, std::string& mesh, std::vector<std::string>& sources)
 {
   cmd.add_option("MESH", mesh,
                  "Mesh (.off, .obj, .ply or .stl): triangles, polygons, soups, non-manifold meshes; vertex ids "
@@ -76,8 +76,6 @@ void add_mesh_and_sources(CLI::App& cmd, std::string& mesh, Sources& sources)
     ->delimiter(',')
     ->allow_extra_args(false);
 }
-
-} // namespace
 
 // ---------------------------------------------------------------------------------------------
 // The options as given

@@ -54,6 +54,9 @@ struct Path_options
   bool stats = false;
 };
 
+/// Declares the arguments the subcommands start with: the mesh and the sources (required).
+void add_mesh_and_sources(CLI::App& cmd, std::string& mesh, std::vector<std::string>& sources);
+
 /// Declares the subcommand `distances` of `app`, which fills `options`.
 void add_distances_command(CLI::App& app, Distances_options& options);
 

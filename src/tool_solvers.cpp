@@ -10,6 +10,7 @@
 #include <CGAL_ext/farthest_point_sampling.h>
 #include <CGAL_ext/geodesic_distance_matrix.h>
 #include <CGAL_ext/geodesic_distances.h>
+#include <CGAL_ext/geodesic_voronoi_diagram.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/global_control.h>
@@ -346,6 +347,58 @@ Sampling_result compute_samples(const Mesh_file& file, const Sampling_request& r
     result.labels.push_back(get(label, v));
   }
   return result;
+}
+
+Voronoi_result compute_voronoi(const Mesh_file& file, const std::vector<Surface_point>& sources,
+                               const Solver_choice& choice)
+{
+  check_a_source_is_on_a_face(file, sources);
+  Voronoi_result result;
+  const auto np = CGAL_ext::parameters::glued_vertices(file.glued_vertices)
+                    .batch_size(choice.batch_size)
+                    .algorithm(choice.algorithm->library);
+  const auto take = [&](const auto& diagram) {
+    for(Vertex_index v : file.vertex_of_point) {
+      const std::size_t cell = diagram.vertex_cell[v.idx()];
+      result.cells.push_back(cell == CGAL_ext::no_source ? -1 : long(cell));
+      result.distances.push_back(diagram.vertex_distance[v.idx()]);
+    }
+    for(const auto& b : diagram.bisectors) {
+      Voronoi_result::Curve curve{b.first_source, b.second_source, {}};
+      for(const auto& p : b.points)
+        curve.points.push_back(p.point);
+      result.bisectors.push_back(std::move(curve));
+    }
+    for(const auto& v : diagram.vertices) {
+      result.vertex_points.push_back(v.point.point);
+      result.vertex_sources.push_back(v.sources);
+    }
+    result.dual_edges = diagram.dual_edges;
+    result.dual_triangles = diagram.dual_triangles;
+    result.unresolved_parts = diagram.unresolved_parts;
+  };
+  with_library_sources(file, sources, [&](const auto& library_sources) {
+    if(choice.algorithm->parallel) {
+      const Thread_allowance allowance(choice.threads);
+      take(CGAL_ext::geodesic_voronoi_diagram<Parallel_tag>(file.mesh, library_sources,
+                                                            np.number_of_threads(choice.threads)));
+    } else {
+      take(CGAL_ext::geodesic_voronoi_diagram(file.mesh, library_sources, np));
+    }
+  });
+  return result;
+}
+
+Point surface_point_position(const Mesh_file& file, const Surface_point& s)
+{
+  if(s.vertex)
+    return file.soup.points[*s.vertex];
+  const std::vector<std::size_t>& polygon = file.soup.polygons[s.face];
+  double x[3] = {0, 0, 0};
+  for(std::size_t k = 0; k < 3; ++k)
+    for(int i = 0; i < 3; ++i)
+      x[i] += s.barycentric[k] * file.soup.points[polygon[k]][i];
+  return Point(x[0], x[1], x[2]);
 }
 
 } // namespace geodesic_tool

@@ -10,10 +10,12 @@
 
 #include <CGAL_ext/Geodesics_3/Geodesic_statistics.h>
 
+#include <array>
 #include <cstddef>
 #include <functional>
 #include <limits>
 #include <optional>
+#include <utility>
 #include <vector>
 
 namespace geodesic_tool {
@@ -76,6 +78,31 @@ struct Sampling_result
 
 /// Runs the library's farthest_point_sampling (the VTP family of `choice`), with a progress line.
 Sampling_result compute_samples(const Mesh_file& file, const Sampling_request& request, const Solver_choice& choice);
+
+/// The geodesic Voronoi diagram of the sources, in the file's terms.
+struct Voronoi_result
+{
+  std::vector<long> cells;       // per point of the file: its nearest source, -1 if none
+  std::vector<double> distances; // per point of the file
+  struct Curve
+  {
+    std::size_t first_source, second_source;
+    std::vector<Point> points;
+  };
+  std::vector<Curve> bisectors;
+  std::vector<Point> vertex_points;
+  std::vector<std::array<std::size_t, 3>> vertex_sources;
+  std::vector<std::pair<std::size_t, std::size_t>> dual_edges;
+  std::vector<std::array<std::size_t, 3>> dual_triangles;
+  std::size_t unresolved_parts = 0;
+};
+
+/// Runs the library's geodesic_voronoi_diagram with the chosen MMP solver.
+Voronoi_result compute_voronoi(const Mesh_file& file, const std::vector<Surface_point>& sources,
+                               const Solver_choice& choice);
+
+/// The position of a source or target in space (a vertex's point, or the face point's).
+Point surface_point_position(const Mesh_file& file, const Surface_point& s);
 
 } // namespace geodesic_tool
 

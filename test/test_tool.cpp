@@ -1623,6 +1623,7 @@ const std::vector<std::pair<std::string, std::string>> bad_files = {
 const std::string E = "distances '" + elephant + "'";
 const std::string P = "path '" + elephant + "'";
 const std::string S = "sample '" + elephant + "'";
+const std::string V = "voronoi '" + elephant + "'";
 
 const Bad_case bad_cases[] = {
   {"face_point_on_a_quad", "distances quad.off --source f:0:0.2:0.3:0.5", "d.txt",
@@ -1745,6 +1746,13 @@ const Bad_case bad_cases[] = {
   {"sample_labels_same_file", S + " --count 3 --labels s.txt", "s.txt", "name the same file 's.txt'"},
   {"sample_more_than_distinct", "sample needle.off --count 5", "s.txt", "after 4 every vertex is a sample or at distance 0"},
   {"sample_point_cloud", "sample no_faces.off --count 1", "s.txt", "a point cloud"},
+  {"voronoi_cells_obj", V + " --source 0,100", "c.obj", "unknown output format 'c.obj'"},
+  {"voronoi_bisectors_ply", V + " --source 0,100 --bisectors b.ply", "c.txt", "--bisectors 'b.ply': use .obj or .txt"},
+  {"voronoi_dual_txt", V + " --source 0,100 --dual d.txt", "c.txt", "the dual graph is written as .obj"},
+  {"voronoi_with_vtp", V + " --source 0,100 --algorithm vtp", "c.txt", "--algorithm vtp keeps no windows"},
+  {"voronoi_same_files", V + " --source 0,100 --bisectors c.txt", "c.txt", "name the same file 'c.txt'"},
+  {"voronoi_source_out_of_range", V + " --source 0,2775", "c.txt", "source '2775'"},
+  {"voronoi_missing_source", V, "c.txt", "--source"},
 };
 
 class Bad_input : public Tool, public ::testing::WithParamInterface<Bad_case>
@@ -1849,6 +1857,53 @@ TEST_F(Tool, sample_gives_the_farthest_vertices_and_their_radii)
   ASSERT_EQ(labels.size(), 2775u);
   for(std::size_t k = 0; k < from_7.size(); ++k)
     EXPECT_EQ(labels[from_7[k].first], std::to_string(k));
+}
+
+// ---------------------------------------------------------------------------------------------
+// geodesic voronoi
+
+// The cells are the labels of distances --labels; the bisectors' pairs are the dual graph's
+// edges; the dual graph's vertices are the sources.
+TEST_F(Tool, voronoi_cells_bisectors_and_dual_graph)
+{
+  const std::string sources = " --source 0,100,1000,f:40:0.6:0.3:0.1";
+  ASSERT_EQ(run("voronoi '" + elephant + "'" + sources + " --output c.txt --bisectors b.txt --dual d.obj").exit_code, 0);
+  distances("distances '" + elephant + "'" + sources + " --algorithm fwp-mmp --labels l.txt");
+  EXPECT_EQ(read_text(path("c.txt")), read_text(path("l.txt")));
+
+  std::set<std::pair<int, int>> bisector_pairs;
+  std::size_t points = 0, polylines = 1;
+  for(const std::string& line : lines_of(read_text(path("b.txt")))) {
+    if(line.empty()) {
+      ++polylines;
+      continue;
+    }
+    std::istringstream in(line);
+    double x, y, z;
+    int a = -1, b = -1;
+    ASSERT_TRUE(in >> x >> y >> z >> a >> b) << line;
+    EXPECT_TRUE(0 <= a && a < b && b < 4) << line;
+    bisector_pairs.insert({a, b});
+    ++points;
+  }
+  EXPECT_GT(points, 20u);
+  EXPECT_GE(polylines, bisector_pairs.size());
+
+  std::set<std::pair<int, int>> dual_edges;
+  std::size_t vertices = 0;
+  for(const std::string& line : lines_of(read_text(path("d.obj")))) {
+    std::istringstream in(line);
+    std::string kind;
+    in >> kind;
+    vertices += kind == "v";
+    if(kind == "l") {
+      int a, b;
+      in >> a >> b;
+      dual_edges.insert({a - 1, b - 1});
+    }
+  }
+  EXPECT_EQ(vertices, 4u);
+  EXPECT_EQ(dual_edges, bisector_pairs);
 }
 
 // ---------------------------------------------------------------------------------------------

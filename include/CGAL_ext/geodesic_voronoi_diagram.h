@@ -17,6 +17,7 @@
 
 #include <CGAL/tags.h>
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <set>
@@ -168,6 +169,15 @@ geodesic_voronoi_diagram(const TriangleMesh& tm, const Sources& sources,
       for(std::size_t k = skip; k < points.size(); ++k)
         bisector.points.push_back(point_of(reversed ? points[points.size() - 1 - k] : points[k]));
     }
+    // a curve of round-off size (pieces met where a part was cut down around a vertex) is none
+    double extent = 0;
+    for(const auto& [index, reversed] : line)
+      for(const internal::Face_point& p : pieces[index].points) {
+        const std::array<double, 3> x = builder.position(p), o = first[line.front().first];
+        extent = std::max({extent, std::abs(x[0] - o[0]), std::abs(x[1] - o[1]), std::abs(x[2] - o[2])});
+      }
+    if(!(extent > 1e-6 * cache.mean_edge_length))
+      continue;
     pairs.insert({bisector.first_source, bisector.second_source});
     diagram.bisectors.push_back(std::move(bisector));
   }
