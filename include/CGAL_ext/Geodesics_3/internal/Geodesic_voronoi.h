@@ -6,16 +6,15 @@
 // bisectors (where two cells meet) and the Voronoi vertices (where three meet), read from the
 // nearest source at any surface point that the path tracer gives exactly.
 
-#include <CGAL_ext/Geodesics_3/Tolerances.h>
 #include <CGAL_ext/Geodesics_3/internal/Edge_window_store.h>
 #include <CGAL_ext/Geodesics_3/internal/Geodesic_path_tracer.h>
 #include <CGAL_ext/Geodesics_3/internal/Mesh_cache.h>
+#include <CGAL_ext/Geodesics_3/internal/Sources.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
-#include <map>
 #include <utility>
 #include <vector>
 
@@ -127,15 +126,7 @@ private:
   // As the tracer's public queries see the point: coordinates below the snap are 0.
   Surface_location location(const Face_point& p) const
   {
-    std::array<double, 3> b = p.b;
-    double sum = 0;
-    for(double& c : b) {
-      if(c < barycentric_snap)
-        c = 0;
-      sum += c;
-    }
-    for(double& c : b)
-      c /= sum;
+    const std::array<double, 3> b = snapped_barycentric(p.b);
     const int zeros = (b[0] == 0) + (b[1] == 0) + (b[2] == 0);
     for(int k = 0; k < 3; ++k) {
       if(zeros == 2 && b[std::size_t(k)] > 0)

@@ -55,6 +55,21 @@ inline void check_vertex_index(const Mesh_cache& m, long v, const char* role)
                          std::to_string(m.number_of_mesh_vertices) + " vertices)");
 }
 
+/// Barycentric coordinates with those below `barycentric_snap` made 0 (the point is then on an
+/// edge or at a corner), the others scaled to sum to 1.
+inline std::array<double, 3> snapped_barycentric(std::array<double, 3> b)
+{
+  double sum = 0;
+  for(double& c : b) {
+    if(c < barycentric_snap)
+      c = 0;
+    sum += c;
+  }
+  for(double& c : b)
+    c /= sum;
+  return b;
+}
+
 /// Checks a point of face `face` given by barycentric coordinates (a face index of the mesh,
 /// coordinates non-negative and summing to 1) and returns its coordinates with those that are
 /// zero up to round-off made zero, summing to 1. `role` names the point in messages.
@@ -73,16 +88,7 @@ inline std::array<double, 3> checked_barycentric(const Mesh_cache& m, long face,
         << face << " must be non-negative and sum to 1";
     throw Geodesic_error(msg.str());
   }
-  std::array<double, 3> snapped = b;
-  double snapped_sum = 0;
-  for(double& c : snapped) {
-    if(c < barycentric_snap)
-      c = 0;
-    snapped_sum += c;
-  }
-  for(double& c : snapped)
-    c /= snapped_sum;
-  return snapped;
+  return snapped_barycentric(b);
 }
 
 /// Checks a source and turns a face point that sits on a corner into a vertex source.
