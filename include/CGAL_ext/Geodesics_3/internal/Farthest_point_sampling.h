@@ -4,7 +4,7 @@
 
 // Exact farthest-point sampling, incremental: each new sample's propagation starts from the
 // distance field of the samples before it, so it sweeps only the region where the new sample
-// is nearer (VTP_solver::start_from).
+// is nearer (VTP_solver::keep_field_for_next_run).
 
 #include <CGAL_ext/Geodesics_3/Geodesic_error.h>
 #include <CGAL_ext/Geodesics_3/internal/Geodesic_setup.h>
@@ -27,11 +27,12 @@ template <bool parallel>
 class Farthest_point_sampler
 {
 public:
+  /// One solver serves every sample: each run starts from the field the last one left, and
+  /// resets only what that run wrote.
   Farthest_point_sampler(const Mesh_cache& mesh, const Solver_settings& settings)
     : m_mesh(mesh)
     , m_settings(settings)
-    , m_distance(mesh.number_of_vertices, std::numeric_limits<double>::infinity())
-    , m_nearest(mesh.number_of_vertices, -1)
+    , m_solver(mesh, settings, parallel)
   {
   }
 
@@ -41,59 +42,50 @@ public:
   {
     const int index = int(m_samples.size());
     m_samples.push_back(v);
+    m_solver.keep_field_for_next_run(index);
     if(is_isolated_point(m_mesh, v)) {
-      m_mesh.for_each_copy_of_point(v, [&](int u) {
-        m_distance[std::size_t(u)] = 0;
-        m_nearest[std::size_t(u)] = index;
-      });
-      return;
+      m_solver.set_isolated_point(v, 0., index);
+    } else {
+      Source_point s;
+      s.vertex = v;
+      m_solver.add_source(s);
+      run_solver<parallel>(m_solver, m_settings.number_of_threads);
+      const Geodesic_statistics& run = m_solver.statistics();
+      m_statistics.windows_created += run.windows_created;
+      m_statistics.peak_windows = std::max(m_statistics.peak_windows, run.peak_windows);
+      m_statistics.peak_window_bytes = std::max(m_statistics.peak_window_bytes, run.peak_window_bytes);
+      m_statistics.vertices_popped += run.vertices_popped;
+      m_statistics.lists_propagated += run.lists_propagated;
+      m_statistics.wavefront_resets += run.wavefront_resets;
+      m_statistics.seconds_solve += run.seconds_solve;
     }
-    VTP_solver solver(m_mesh, m_settings, parallel);
-    solver.start_from(std::move(m_distance), std::move(m_nearest), index);
-    Source_point s;
-    s.vertex = v;
-    solver.add_source(s);
-    run_solver<parallel>(solver, m_settings.number_of_threads);
-    solver.take_result(m_distance, m_nearest);
-    const Geodesic_statistics& run = solver.statistics();
-    m_statistics.windows_created += run.windows_created;
-    m_statistics.peak_windows = std::max(m_statistics.peak_windows, run.peak_windows);
-    m_statistics.peak_window_bytes = std::max(m_statistics.peak_window_bytes, run.peak_window_bytes);
-    m_statistics.vertices_popped += run.vertices_popped;
-    m_statistics.lists_propagated += run.lists_propagated;
-    m_statistics.seconds_solve += run.seconds_solve;
-    m_last_windows = run.windows_created;
+    // the farthest vertex now, the lowest index of those at the largest distance (+infinity
+    // first: a component with no sample yet)
+    const std::vector<double>& d = m_solver.distances();
+    m_farthest = 0;
+    for(std::size_t u = 1; u < m_mesh.number_of_mesh_vertices; ++u)
+      if(d[u] > d[std::size_t(m_farthest)])
+        m_farthest = int(u);
   }
 
-  /// The vertex of the caller's mesh farthest from every sample (the lowest index of those at
-  /// the largest distance; +infinity first: a component with no sample yet).
-  int farthest_vertex() const
-  {
-    int best = 0;
-    for(std::size_t v = 1; v < m_mesh.number_of_mesh_vertices; ++v)
-      if(m_distance[v] > m_distance[std::size_t(best)])
-        best = int(v);
-    return best;
-  }
+  /// The vertex of the caller's mesh farthest from every sample.
+  int farthest_vertex() const { return m_farthest; }
   /// The largest distance of a vertex to its nearest sample.
-  double covering_radius() const { return m_distance[std::size_t(farthest_vertex())]; }
+  double covering_radius() const { return m_solver.distances()[std::size_t(m_farthest)]; }
 
   const std::vector<int>& samples() const { return m_samples; }
-  const std::vector<double>& distances() const { return m_distance; }
-  const std::vector<int>& nearest_samples() const { return m_nearest; }
+  const std::vector<double>& distances() const { return m_solver.distances(); }
+  const std::vector<int>& nearest_samples() const { return m_solver.nearest_sources(); }
   /// What the propagations did, added up (peaks: the largest).
   const Geodesic_statistics& statistics() const { return m_statistics; }
-  /// The windows the last sample's propagation made.
-  std::size_t windows_of_last_sample() const { return m_last_windows; }
 
 private:
   const Mesh_cache& m_mesh;
   const Solver_settings m_settings;
-  std::vector<double> m_distance;
-  std::vector<int> m_nearest;
+  VTP_solver m_solver;
   std::vector<int> m_samples;
+  int m_farthest = 0;
   Geodesic_statistics m_statistics;
-  std::size_t m_last_windows = 0;
 };
 
 /// The default first sample: the vertex farthest from the first vertex in a face (vertex 0 on

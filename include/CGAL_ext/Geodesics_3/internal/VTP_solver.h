@@ -99,21 +99,6 @@ public:
     }
   }
 
-  /// Starts from a distance field already reached (the distance and nearest source of every
-  /// vertex, in the cache's unit, as `distances()` and `nearest_sources()` give them) instead of
-  /// +infinity: the run lowers it where its own sources are nearer, and only there, since the
-  /// trimming by edge vertices drops every window that cannot lower a vertex. Its sources are
-  /// numbered from `first_source_index` on.
-  void start_from(std::vector<double> distances, std::vector<int> nearest, int first_source_index)
-  {
-    if(distances.size() != m_distance.size() || nearest.size() != m_distance.size())
-      throw Geodesic_error("a distance field to start from has one value per vertex");
-    m_distance = std::move(distances);
-    m_nearest_source = std::move(nearest);
-    m_first_source_index = first_source_index;
-    m_started_from_a_field = true;
-  }
-
   /// Makes the solver ready for another run on the same mesh with the same settings, without
   /// sources or stop vertices: only what the last run wrote is reset, so that a run costs what
   /// it sweeps, not the size of the mesh (the window lists are all empty after a run).
@@ -129,37 +114,38 @@ public:
       for(int v : m_reached) {
         m_distance[v] = infinity();
         m_nearest_source[v] = -1;
-        m_emitted[v] = infinity();
-        m_is_taken[v] = 0;
-        m_emits_when_taken[v] = m_mesh.is_pseudo_source[v];
       }
     }
-    m_reached.clear();
+    forget_run();
     m_started_from_a_field = false;
     m_first_source_index = 0;
-    m_sources.clear();
-    for(int v : m_stop_vertices)
-      m_is_stop[v] = 0;
-    m_stop_vertices.clear();
-    m_stops_taken = 0;
-    m_stop_limit = infinity();
-    m_heap.clear();
-    m_buckets.clear();
-    m_window_limit = m_max_distance;
-    m_peak_windows = 0;
-    m_statistics = Geodesic_statistics();
+  }
+
+  /// Makes the solver ready for another run that starts from the distance field the last one
+  /// left instead of +infinity, its sources numbered from `first_source_index` on; only what the
+  /// last run wrote is reset. The run lowers the field where its own sources are nearer, and
+  /// only there, since the trimming by edge vertices drops every window that cannot lower a
+  /// vertex.
+  void keep_field_for_next_run(int first_source_index)
+  {
+    forget_run();
+    m_started_from_a_field = true;
+    m_first_source_index = first_source_index;
+  }
+
+  /// Sets the distance and nearest source of a point that no propagation reaches (a vertex in
+  /// no face, and the vertices glued to it), for the field the next run starts from.
+  void set_isolated_point(int v, double d, int source)
+  {
+    m_mesh.for_each_copy_of_point(v, [&](int u) {
+      m_distance[u] = d;
+      m_nearest_source[u] = source;
+    });
   }
 
   /// The vertices whose distance the last run set (some are +infinity again when beyond the
-  /// limit), each once; not those of a field given to start_from().
+  /// limit), each once.
   const std::vector<int>& reached_vertices() const { return m_reached; }
-
-  /// Hands the distances and nearest sources over to the caller (the solver is done with them).
-  void take_result(std::vector<double>& distances, std::vector<int>& nearest)
-  {
-    distances.swap(m_distance);
-    nearest.swap(m_nearest_source);
-  }
 
   /// Runs the propagation; distances beyond the max distance, or beyond the farthest stop
   /// vertex when stop vertices are given, are +infinity.
@@ -197,6 +183,33 @@ public:
   }
 
 private:
+  // Resets what a run wrote apart from the distances and nearest sources, and its sources,
+  // stop vertices, queues and statistics.
+  void forget_run()
+  {
+    for(int v : m_reached) {
+      m_emitted[v] = infinity();
+      m_is_taken[v] = 0;
+      m_emits_when_taken[v] = m_mesh.is_pseudo_source[v];
+    }
+    m_reached.clear();
+    if(++m_run == 0) { // the stamps wrapped around: none may look current
+      std::fill(m_stamp.begin(), m_stamp.end(), 0);
+      m_run = 1;
+    }
+    m_sources.clear();
+    for(int v : m_stop_vertices)
+      m_is_stop[v] = 0;
+    m_stop_vertices.clear();
+    m_stops_taken = 0;
+    m_stop_limit = infinity();
+    m_heap.clear();
+    m_buckets.clear();
+    m_window_limit = m_max_distance;
+    m_peak_windows = 0;
+    m_statistics = Geodesic_statistics();
+  }
+
   // The distance up to which results are wanted.
   double limit() const { return std::min(m_max_distance, m_stop_limit); }
 
@@ -221,8 +234,10 @@ private:
 
   void set_distance(int v, double d, int source)
   {
-    if(m_distance[v] == infinity())
+    if(m_stamp[v] != m_run) {
+      m_stamp[v] = m_run;
       m_reached.push_back(v);
+    }
     m_distance[v] = d;
     m_nearest_source[v] = source;
     if(!m_is_taken[v] || m_emits_when_taken[v]) {
@@ -598,9 +613,11 @@ private:
   std::size_t m_main_slot = 0; // the pool slot of the thread running run()
   std::vector<int> m_stop_vertices;
   std::size_t m_stops_taken = 0;
-  int m_first_source_index = 0; // the number of the first source (start_from)
+  int m_first_source_index = 0; // the number of the first source (keep_field_for_next_run)
   bool m_started_from_a_field = false;
-  std::vector<int> m_reached; // vertices whose distance this run set, each once
+  std::vector<int> m_reached;        // vertices whose distance this run set, each once
+  std::vector<std::uint32_t> m_stamp = std::vector<std::uint32_t>(m_mesh.number_of_vertices, 0); // per vertex: the last run that set its distance
+  std::uint32_t m_run = 1;
   double m_stop_limit = infinity();
   const double m_reset_step; // lambda h, or 0 for exact propagation
   double m_next_reset = 0;
