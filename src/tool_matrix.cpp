@@ -18,6 +18,8 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <sstream>
 
@@ -159,7 +161,47 @@ std::vector<std::size_t> target_columns(const Matrix_options& options, const std
   return columns;
 }
 
+std::string gigabytes(double bytes)
+{
+  char text[32];
+  std::snprintf(text, sizeof(text), "%.3g GB", bytes / 1e9);
+  return text;
+}
+
 } // namespace
+
+void check_matrix_fits(Matrix_format format, std::size_t rows, std::size_t columns, bool local,
+                       std::uintmax_t available_memory, std::uintmax_t free_disk)
+{
+  const double entries = double(rows) * double(columns);
+  if(format == Matrix_format::mtx) {
+    // an entry is held as two indices and a value until the header can count them
+    const double held = entries * double(sizeof(std::size_t) * 2 + sizeof(double));
+    if(!local && available_memory > 0 && held > double(available_memory))
+      throw Tool_error("a .mtx matrix of " + std::to_string(rows) + " x " + std::to_string(columns) +
+                       " without --max-distance holds up to " + gigabytes(held) + " in memory, more than the " +
+                       gigabytes(double(available_memory)) +
+                       " available; give --max-distance (a local, sparse matrix) or write .npy");
+    return;
+  }
+  const double bytes = entries * (format == Matrix_format::npy ? 8. : 24.);
+  if(free_disk > 0 && bytes > double(free_disk))
+    throw Tool_error("a dense matrix of " + std::to_string(rows) + " x " + std::to_string(columns) + " needs about " +
+                     gigabytes(bytes) + " on disk, more than the " + gigabytes(double(free_disk)) +
+                     " free; give --max-distance and write .mtx (only the entries within it)");
+}
+
+std::uintmax_t available_memory_bytes()
+{
+  std::ifstream in("/proc/meminfo");
+  std::string key;
+  std::uintmax_t kilobytes = 0;
+  std::string unit;
+  while(in >> key >> kilobytes >> unit)
+    if(key == "MemAvailable:")
+      return kilobytes * 1024;
+  return 0;
+}
 
 int run_matrix(const Matrix_options& options)
 {
@@ -181,6 +223,13 @@ int run_matrix(const Matrix_options& options)
   for(const Surface_point& s : sources)
     check_surface_point_range(s, file.soup.points.size(), file.soup.polygons.size());
   const std::vector<std::size_t> columns = target_columns(options, sources, file.soup.points.size());
+  {
+    std::error_code error;
+    const std::filesystem::path folder = std::filesystem::absolute(options.output).parent_path();
+    const std::filesystem::space_info space = std::filesystem::space(folder, error);
+    check_matrix_fits(format, sources.size(), columns.size(), std::isfinite(options.max_distance),
+                      available_memory_bytes(), error ? 0 : space.available);
+  }
 
   Progress_line progress;
   std::size_t entries = 0;

@@ -6,6 +6,7 @@
 #define GEODESIC_TOOL_MATRIX_H
 
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <optional>
 #include <ostream>
@@ -59,6 +60,16 @@ private:
   std::size_t m_rows, m_columns, m_written = 0;
   std::vector<Entry> m_entries; // .mtx
 };
+
+/// Throws Tool_error, saying how much is needed and what to do instead, when a matrix of `rows`
+/// x `columns` cannot be written: a dense file (.npy, .txt) larger than `free_disk` bytes, or a
+/// .mtx file without `max_distance` whose entries (held in memory until the end, as its header
+/// counts them) could exceed `available_memory` bytes. 0 for an amount that is not known.
+void check_matrix_fits(Matrix_format format, std::size_t rows, std::size_t columns, bool local,
+                       std::uintmax_t available_memory, std::uintmax_t free_disk);
+
+/// The memory the system can still give (MemAvailable of /proc/meminfo), 0 if not known.
+std::uintmax_t available_memory_bytes();
 
 int run_matrix(const Matrix_options& options);
 

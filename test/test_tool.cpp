@@ -5,6 +5,7 @@
 // for inspection).
 
 #include "tool_error.h"
+#include "tool_matrix.h"
 #include "tool_mesh.h"
 #include "tool_options.h"
 #include "tool_output.h"
@@ -1985,6 +1986,22 @@ TEST_F(Tool, matrix_square_npy_and_sparse_mtx)
     ASSERT_TRUE(i >= 1 && i <= 2 && j >= 1 && j <= columns) << lines[k];
     EXPECT_EQ(d, full[i - 1][j - 1]);
   }
+}
+
+// A matrix that cannot be written says how much it needs and what to do instead.
+TEST(Tool_matrix, a_matrix_too_large_is_refused_before_it_is_solved)
+{
+  const std::size_t mb = 1000000;
+  const std::string mtx = tool_error_of([&] { tool::check_matrix_fits(tool::Matrix_format::mtx, 1000, 1000, false, mb, 0); });
+  EXPECT_NE(mtx.find("holds up to 0.024 GB in memory, more than the 0.001 GB available"), std::string::npos) << mtx;
+  EXPECT_NE(mtx.find("give --max-distance"), std::string::npos) << mtx;
+  EXPECT_NO_THROW(tool::check_matrix_fits(tool::Matrix_format::mtx, 1000, 1000, true, mb, 0)) << "a local matrix";
+  EXPECT_NO_THROW(tool::check_matrix_fits(tool::Matrix_format::mtx, 1000, 1000, false, 0, 0)) << "memory unknown";
+  const std::string npy = tool_error_of([&] { tool::check_matrix_fits(tool::Matrix_format::npy, 1000, 1000, false, 0, mb); });
+  EXPECT_NE(npy.find("needs about 0.008 GB on disk, more than the 0.001 GB free"), std::string::npos) << npy;
+  EXPECT_NE(npy.find("write .mtx"), std::string::npos) << npy;
+  EXPECT_NO_THROW(tool::check_matrix_fits(tool::Matrix_format::npy, 1000, 1000, false, 0, 100 * mb));
+  EXPECT_GT(tool::available_memory_bytes(), 0u) << "/proc/meminfo is read";
 }
 
 TEST_F(Tool, matrix_bad_input_writes_no_file)
