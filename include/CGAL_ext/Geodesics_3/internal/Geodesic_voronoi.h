@@ -94,6 +94,8 @@ public:
         corners[std::size_t(k)].b[std::size_t(k)] = 1.;
       }
       m_face_sources = &sources_in_face[f];
+      if(m_face_sources->empty() && in_one_cell(int(f)))
+        continue;
       handle_triangle(corners, 0);
     }
   }
@@ -115,6 +117,30 @@ public:
   std::array<double, 3> position(const Face_point& p) const { return m_tracer.position(location(p)); }
 
 private:
+  /// Whether every way into face f comes from one source: its corners' and every window's on its
+  /// edges. Then every point of the face has that nearest source (the tracer takes the best of
+  /// these ways), and the face holds no bisector. Most faces are so.
+  bool in_one_cell(int f) const
+  {
+    const int cell = label_of_vertex(m_mesh.source(3 * f));
+    for(int k = 0; k < 3; ++k) {
+      const int h = 3 * f + k;
+      if(label_of_vertex(m_mesh.source(h)) != cell)
+        return false;
+      for(const Edge_window* w = m_windows.windows_of_edge(h); w; w = w->next)
+        if(w->source != cell)
+          return false;
+    }
+    return true;
+  }
+
+  int label_of_vertex(int v) const
+  {
+    int s = -1;
+    m_tracer.distance(Surface_location::at_vertex(v), s);
+    return s;
+  }
+
   /// A change of the nearest source along a segment of the boundary of a part: at `point`,
   /// from `before` to `after` going along the boundary.
   struct Crossing
