@@ -38,6 +38,7 @@ struct Window : Window_geometry
 {
   double d0, d1;
   int source;
+  int padding = 0; // named: with unnamed padding GCC sorted windows at a higher cost (doc/experiments.md)
 };
 static_assert(sizeof(Window) == 64, "a list window is one cache line");
 
