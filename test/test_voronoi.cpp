@@ -178,6 +178,32 @@ TEST(Geodesic_voronoi, a_point_at_the_snap_distance_from_a_vertex_is_measured_th
   }
 }
 
+// A source alone in its connected component: its cell is the whole component, with no bisector
+// to the sources of the other component; the diagram of the other component is as without it.
+TEST(Geodesic_voronoi, a_source_alone_in_its_component_owns_it)
+{
+  std::vector<Point> points;
+  std::vector<Triangle> triangles;
+  for(int c = 0; c < 2; ++c) {
+    const int o = int(points.size());
+    for(int j = 0; j <= 6; ++j)
+      for(int i = 0; i <= 6; ++i)
+        points.push_back(Point(i / 6. + 5 * c, j / 6., 0.1 * std::sin(i + j)));
+    for(int j = 0; j < 6; ++j)
+      for(int i = 0; i < 6; ++i)
+        add_quad(triangles, o + j * 7 + i, o + j * 7 + i + 1, o + (j + 1) * 7 + i + 1, o + (j + 1) * 7 + i, (i + j) % 2 == 0);
+  }
+  const Mesh m = mesh_from_soup(points, triangles);
+  const std::vector<Face_location> sources{corner_location(m, Vertex(0)), corner_location(m, Vertex(48)),
+                                           corner_location(m, Vertex(49 + 24))};
+  const auto d = CGAL_ext::geodesic_voronoi_diagram(m, sources);
+  expect_exact_diagram(m, sources, d, "two components");
+  for(std::size_t v = 49; v < 98; ++v)
+    EXPECT_EQ(d.vertex_cell[v], 2u) << "vertex " << v;
+  EXPECT_EQ(d.dual_edges, (std::vector<std::pair<std::size_t, std::size_t>>{{0, 1}}));
+  EXPECT_TRUE(d.vertices.empty());
+}
+
 TEST(Geodesic_voronoi, bad_requests_are_named)
 {
   const Mesh& m = test_mesh("elephant");
