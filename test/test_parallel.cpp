@@ -9,6 +9,7 @@
 
 #include <CGAL_ext/Surface_mesh_geodesic_paths.h>
 #include <CGAL_ext/geodesic_distance_matrix.h>
+#include <CGAL_ext/geodesic_voronoi_diagram.h>
 #include <CGAL_ext/Geodesics_3/internal/Parallel_for.h>
 
 #include <tbb/task_arena.h>
@@ -609,6 +610,31 @@ TEST(Source_labels, unreachable_vertices_get_no_source_and_a_duplicate_source_th
     EXPECT_GT(unreached, 0u);
     EXPECT_EQ(run.labels[0], 0);
     EXPECT_EQ(run.labels[100], 2);
+  }
+}
+
+// The Voronoi diagram's faces are handled in blocks on the arena's threads, each block writing
+// its own output: the same diagram, point for point, for every thread count.
+TEST(Geodesic_voronoi_parallel, the_same_diagram_for_every_thread_count)
+{
+  const Mesh& m = test_mesh("elephant");
+  const std::vector<Vertex> sources = spread_vertices(m, 6, 11);
+  const auto one = CGAL_ext::geodesic_voronoi_diagram<CGAL::Parallel_tag>(m, sources, number_of_threads(1));
+  ASSERT_FALSE(one.bisectors.empty());
+  for(int threads : {2, 4}) {
+    const auto many = CGAL_ext::geodesic_voronoi_diagram<CGAL::Parallel_tag>(m, sources, number_of_threads(threads));
+    EXPECT_EQ(many.vertex_cell, one.vertex_cell) << threads << " threads";
+    EXPECT_EQ(many.dual_edges, one.dual_edges) << threads << " threads";
+    EXPECT_EQ(many.dual_triangles, one.dual_triangles) << threads << " threads";
+    ASSERT_EQ(many.bisectors.size(), one.bisectors.size()) << threads << " threads";
+    for(std::size_t i = 0; i < one.bisectors.size(); ++i) {
+      ASSERT_EQ(many.bisectors[i].points.size(), one.bisectors[i].points.size()) << threads << " threads";
+      for(std::size_t k = 0; k < one.bisectors[i].points.size(); ++k)
+        EXPECT_EQ(many.bisectors[i].points[k].point, one.bisectors[i].points[k].point);
+    }
+    ASSERT_EQ(many.vertices.size(), one.vertices.size());
+    for(std::size_t i = 0; i < one.vertices.size(); ++i)
+      EXPECT_EQ(many.vertices[i].point.point, one.vertices[i].point.point);
   }
 }
 

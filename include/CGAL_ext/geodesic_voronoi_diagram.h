@@ -126,7 +126,7 @@ geodesic_voronoi_diagram(const TriangleMesh& tm, const Sources& sources,
   const internal::Geodesic_path_tracer tracer(solver.windows(), solver.distances(), solver.nearest_sources(),
                                               solver.sources(), solver.max_distance());
   internal::Voronoi_builder builder(cache, solver.windows(), tracer);
-  builder.run(solver.sources());
+  internal::run_in_arena<parallel>(settings.number_of_threads, [&] { builder.run(solver.sources(), parallel); });
 
   Diagram diagram;
   const std::vector<int>& nearest = solver.nearest_sources();

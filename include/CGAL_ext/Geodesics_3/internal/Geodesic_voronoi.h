@@ -9,6 +9,7 @@
 #include <CGAL_ext/Geodesics_3/internal/Edge_window_store.h>
 #include <CGAL_ext/Geodesics_3/internal/Geodesic_path_tracer.h>
 #include <CGAL_ext/Geodesics_3/internal/Mesh_cache.h>
+#include <CGAL_ext/Geodesics_3/internal/Parallel_for.h>
 #include <CGAL_ext/Geodesics_3/internal/Sources.h>
 
 #include <algorithm>
@@ -73,8 +74,10 @@ public:
   {
   }
 
-  /// `sources` as the build had them (face points relocated out of removed faces).
-  void run(const std::vector<Source_point>& sources)
+  /// `sources` as the build had them (face points relocated out of removed faces). When
+  /// `parallel`, blocks of faces are handled on the threads of the caller's task arena; each
+  /// block writes its own output, joined in block order: the same diagram for every thread count.
+  void run(const std::vector<Source_point>& sources, bool parallel)
   {
     std::vector<std::vector<std::pair<int, Face_point>>> sources_in_face(m_mesh.number_of_faces);
     for(std::size_t i = 0; i < sources.size(); ++i)
@@ -85,18 +88,36 @@ public:
         m_mesh.relocate_face_point(p.face, p.b);
         sources_in_face[std::size_t(p.face)].emplace_back(int(i), p);
       }
-    for(std::size_t f = 0; f < m_mesh.number_of_faces; ++f) {
-      if(m_mesh.is_face_removed(int(f)))
-        continue;
-      std::array<Face_point, 3> corners;
-      for(int k = 0; k < 3; ++k) {
-        corners[std::size_t(k)].face = int(f);
-        corners[std::size_t(k)].b[std::size_t(k)] = 1.;
+    const std::size_t faces = m_mesh.number_of_faces;
+    const std::size_t blocks = (faces + faces_per_block - 1) / faces_per_block;
+    std::vector<Output> outputs(blocks);
+    for_each_index(parallel, blocks, 1, [&](std::size_t b, std::size_t) {
+      Output& out = outputs[b];
+      for(std::size_t f = b * faces_per_block; f < std::min(faces, (b + 1) * faces_per_block); ++f) {
+        if(m_mesh.is_face_removed(int(f)))
+          continue;
+        std::array<Face_point, 3> corners;
+        for(int k = 0; k < 3; ++k) {
+          corners[std::size_t(k)].face = int(f);
+          corners[std::size_t(k)].b[std::size_t(k)] = 1.;
+        }
+        out.face_sources = &sources_in_face[f];
+        if(out.face_sources->empty() && in_one_cell(int(f)))
+          continue;
+        handle_triangle(corners, 0, out);
       }
-      m_face_sources = &sources_in_face[f];
-      if(m_face_sources->empty() && in_one_cell(int(f)))
-        continue;
-      handle_triangle(corners, 0);
+    });
+    for(Output& out : outputs) {
+      const int offset = int(m_vertices.size());
+      for(Bisector_piece& piece : out.pieces) {
+        if(piece.start_vertex >= 0)
+          piece.start_vertex += offset;
+        if(piece.end_vertex >= 0)
+          piece.end_vertex += offset;
+        m_pieces.push_back(std::move(piece));
+      }
+      m_vertices.insert(m_vertices.end(), out.vertices.begin(), out.vertices.end());
+      m_unresolved += out.unresolved;
     }
   }
 
@@ -140,6 +161,15 @@ private:
     m_tracer.distance(Surface_location::at_vertex(v), s);
     return s;
   }
+
+  /// What the faces of one block give.
+  struct Output
+  {
+    std::vector<Bisector_piece> pieces;
+    std::vector<Voronoi_vertex_found> vertices;
+    std::size_t unresolved = 0;
+    const std::vector<std::pair<int, Face_point>>* face_sources = nullptr; // of the face being handled
+  };
 
   /// A change of the nearest source along a segment of the boundary of a part: at `point`,
   /// from `before` to `after` going along the boundary.
@@ -265,7 +295,7 @@ private:
     }
   }
 
-  void handle_triangle(const std::array<Face_point, 3>& corner, int depth)
+  void handle_triangle(const std::array<Face_point, 3>& corner, int depth, Output& out)
   {
     std::vector<std::pair<Face_point, int>> seen; // boundary points and their cells
     for(std::size_t k = 0; k < 3; ++k)
@@ -276,7 +306,7 @@ private:
     drop_blips(crossings);
     // A source inside whose cell does not reach the boundary is a cell the boundary cannot show.
     bool hidden_cell = false;
-    for(const auto& s : *m_face_sources)
+    for(const auto& s : *out.face_sources)
       if(holds(corner, s.second) && std::none_of(seen.begin(), seen.end(), [&](const auto& x) { return x.second == s.first; }))
         hidden_cell = true;
     const std::size_t n = crossings.size();
@@ -284,7 +314,7 @@ private:
       if(n == 0)
         return;
       if(n == 2 && crossings[0].after == crossings[1].before && crossings[1].after == crossings[0].before) {
-        add_piece(crossings[0].point, crossings[1].point, crossings[0].before, crossings[0].after, -1);
+        add_piece(crossings[0].point, crossings[1].point, crossings[0].before, crossings[0].after, -1, out);
         return;
       }
       if(n == 4) { // one cell on two opposite arcs of the boundary, and two other cells: two bisectors
@@ -292,19 +322,19 @@ private:
           // the cells after crossings i and i+2 (cyclic arcs i and i+2)
           const int x = crossings[i].after, y = crossings[i + 1].after, z = crossings[(i + 3) % 4].after;
           if(x == crossings[i + 2].after && y != z) {
-            add_piece(crossings[i + 1].point, crossings[i + 2].point, y, x, -1);
-            add_piece(crossings[(i + 3) % 4].point, crossings[i].point, z, x, -1);
+            add_piece(crossings[i + 1].point, crossings[i + 2].point, y, x, -1, out);
+            add_piece(crossings[(i + 3) % 4].point, crossings[i].point, z, x, -1, out);
             return;
           }
         }
       }
       if(n == 3 && chain_of_three(crossings)) {
-        int v = find_voronoi_vertex(crossings, seen);
+        int v = find_voronoi_vertex(crossings, seen, out);
         if(v < 0 && size_of(corner) <= vertex_size) // cut down to round-off around the vertex
-          v = add_vertex(corner, crossings);
+          v = add_vertex(corner, crossings, out);
         if(v >= 0) {
           for(const Crossing& c : crossings)
-            add_piece(c.point, m_vertices[std::size_t(v)].location, c.before, c.after, v);
+            add_piece(c.point, out.vertices[std::size_t(v)].location, c.before, c.after, v, out);
           return;
         }
       }
@@ -316,7 +346,7 @@ private:
       for(const Crossing& c : crossings) std::cerr << " " << c.before << ">" << c.after;
       std::cerr << "\n";
 #endif
-      ++m_unresolved;
+      ++out.unresolved;
       return;
     }
     // cut in four: the corners and the middles of the sides
@@ -324,8 +354,8 @@ private:
     for(std::size_t k = 0; k < 3; ++k)
       middle[k] = along(corner[k], corner[(k + 1) % 3], 0.5);
     for(std::size_t k = 0; k < 3; ++k)
-      handle_triangle({corner[k], middle[k], middle[(k + 2) % 3]}, depth + 1);
-    handle_triangle(middle, depth + 1);
+      handle_triangle({corner[k], middle[k], middle[(k + 2) % 3]}, depth + 1, out);
+    handle_triangle(middle, depth + 1, out);
   }
 
   /// Removes pairs of neighbouring changes there and back (a to b, then b to a) closer than
@@ -370,7 +400,8 @@ private:
   /// The point where the three cells of `crossings` meet inside the part: a triangle with a
   /// corner in each cell (points of the boundary, `seen`) is shrunk, keeping a quarter whose
   /// corners are still in the three cells, down to round-off. -1 if it does not get there.
-  int find_voronoi_vertex(const std::vector<Crossing>& crossings, const std::vector<std::pair<Face_point, int>>& seen)
+  int find_voronoi_vertex(const std::vector<Crossing>& crossings, const std::vector<std::pair<Face_point, int>>& seen,
+                          Output& out) const
   {
     const std::array<int, 3> wanted{{crossings[0].before, crossings[1].before, crossings[2].before}};
     auto all_three = [&](const std::array<int, 3>& l) { return std::is_permutation(l.begin(), l.end(), wanted.begin()); };
@@ -405,11 +436,11 @@ private:
     }
     if(!(size_of(t) <= 1e-13 * start_size))
       return -1;
-    return add_vertex(t, crossings);
+    return add_vertex(t, crossings, out);
   }
 
   /// A Voronoi vertex of the cells of `crossings` at the middle of the tiny triangle t.
-  int add_vertex(const std::array<Face_point, 3>& t, const std::vector<Crossing>& crossings)
+  static int add_vertex(const std::array<Face_point, 3>& t, const std::vector<Crossing>& crossings, Output& out)
   {
     Voronoi_vertex_found v;
     v.location.face = t[0].face;
@@ -417,8 +448,8 @@ private:
       v.location.b[k] = (t[0].b[k] + t[1].b[k] + t[2].b[k]) / 3;
     v.sources = {{crossings[0].before, crossings[1].before, crossings[2].before}};
     std::sort(v.sources.begin(), v.sources.end());
-    m_vertices.push_back(v);
-    return int(m_vertices.size()) - 1;
+    out.vertices.push_back(v);
+    return int(out.vertices.size()) - 1;
   }
 
   /// The largest barycentric extent of a part (a size that shrinks by half at each quartering).
@@ -432,7 +463,7 @@ private:
   }
 
   /// A bisector from p to q between cells a and b, with inner points found across the chord.
-  void add_piece(const Face_point& p, const Face_point& q, int a, int b, int vertex_at_q)
+  void add_piece(const Face_point& p, const Face_point& q, int a, int b, int vertex_at_q, Output& out) const
   {
     Bisector_piece piece;
     piece.first_source = std::min(a, b);
@@ -441,7 +472,7 @@ private:
     refine(p, q, a, b, 0, piece.points);
     piece.points.push_back(q);
     piece.end_vertex = vertex_at_q;
-    m_pieces.push_back(std::move(piece));
+    out.pieces.push_back(std::move(piece));
   }
 
   /// Inner points of the bisector between p and q: from the middle of the chord, across it (in
@@ -496,13 +527,13 @@ private:
   }
 
   static constexpr int side_samples = 4;
+  static constexpr std::size_t faces_per_block = 256;
   static constexpr double blip = 1e-9; // in barycentric coordinates
   static constexpr int refine_depth = 2;
 
   const Mesh_cache& m_mesh;
   const Edge_window_store& m_windows;
   const Geodesic_path_tracer& m_tracer;
-  const std::vector<std::pair<int, Face_point>>* m_face_sources = nullptr; // the face-point sources of the face
   std::vector<Bisector_piece> m_pieces;
   std::vector<Voronoi_vertex_found> m_vertices;
   std::size_t m_unresolved = 0;
