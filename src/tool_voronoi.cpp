@@ -95,6 +95,10 @@ bool write_dual_obj(std::ostream& os, const std::vector<Point>& sources,
 int run_voronoi(const Voronoi_options& options)
 {
   // Validate the command line before the (possibly long) reading and solving.
+  for(const Algorithm& a : algorithms)
+    if(options.solver.algorithm == a.name && !keeps_windows(a))
+      throw Tool_error(std::string("--algorithm ") + a.name +
+                       " keeps no windows: a Voronoi diagram is read from those of fwp-mmp, mmp or pmmp");
   const Solver_choice choice = solver_choice(options.solver, true);
   const std::vector<Surface_point> sources = parse_sources(options.sources);
   const Output_format cells_format = output_format(options.output);
