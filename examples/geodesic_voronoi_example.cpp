@@ -47,8 +47,12 @@ int main(int argc, char** argv)
       std::cout << "bisector " << b.first_source << "-" << b.second_source << ": " << b.points.size()
                 << " points, from " << b.points.front().point << " to " << b.points.back().point << "\n";
     for(const auto& v : diagram.vertices)
-      std::cout << "Voronoi vertex of " << v.sources[0] << ", " << v.sources[1] << ", " << v.sources[2] << " at "
-                << v.point.point << "\n";
+    {
+      std::cout << "Voronoi vertex of";
+      for(std::size_t s : v.sources)
+        std::cout << " " << s;
+      std::cout << " at " << v.point.point << "\n";
+    }
     std::cout << "dual graph: " << diagram.dual_edges.size() << " edges, " << diagram.dual_triangles.size()
               << " triangles\n";
   } catch(const CGAL_ext::Geodesic_error& e) {

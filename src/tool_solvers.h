@@ -91,7 +91,7 @@ struct Voronoi_result
   };
   std::vector<Curve> bisectors;
   std::vector<Point> vertex_points;
-  std::vector<std::array<std::size_t, 3>> vertex_sources;
+  std::vector<std::vector<std::size_t>> vertex_sources;
   std::vector<std::pair<std::size_t, std::size_t>> dual_edges;
   std::vector<std::array<std::size_t, 3>> dual_triangles;
   std::size_t unresolved_parts = 0;

@@ -31,6 +31,21 @@ std::vector<std::unique_ptr<Paths>> single_source_paths(const Mesh& m, const std
   return single;
 }
 
+/// The face of a planar mesh (z = 0) that holds point p, with p's barycentric coordinates.
+Face_location planar_location(const Mesh& m, const Point& p)
+{
+  for(Face f : faces(m)) {
+    const auto c = face_corners(m, f);
+    const K::Point_2 a(m.point(c[0]).x(), m.point(c[0]).y()), b(m.point(c[1]).x(), m.point(c[1]).y()),
+      e(m.point(c[2]).x(), m.point(c[2]).y()), q(p.x(), p.y());
+    const double area = CGAL::area(a, b, e);
+    const double l0 = CGAL::area(q, b, e) / area, l1 = CGAL::area(a, q, e) / area, l2 = 1 - l0 - l1;
+    if(l0 >= 0 && l1 >= 0 && l2 >= 0)
+      return Face_location(f, Barycentric{{l0, l1, l2}});
+  }
+  return Face_location(Face(), Barycentric{{0., 0., 0.}});
+}
+
 template <class Diagram>
 void expect_exact_diagram(const Mesh& m, const std::vector<Face_location>& sources, const Diagram& d,
                           const std::string& label)
@@ -59,10 +74,14 @@ void expect_exact_diagram(const Mesh& m, const std::vector<Face_location>& sourc
   EXPECT_EQ(bisector_pairs, d.dual_edges) << label;
   std::set<std::array<std::size_t, 3>> triples;
   for(const auto& v : d.vertices) {
-    triples.insert(v.sources);
+    ASSERT_GE(v.sources.size(), 3u) << label;
+    for(std::size_t i = 0; i < v.sources.size(); ++i)
+      for(std::size_t j = i + 1; j < v.sources.size(); ++j)
+        for(std::size_t k = j + 1; k < v.sources.size(); ++k)
+          triples.insert({{v.sources[i], v.sources[j], v.sources[k]}});
     const double a = single[v.sources[0]]->distance(v.point.location);
-    EXPECT_NEAR(single[v.sources[1]]->distance(v.point.location), a, tolerance) << label;
-    EXPECT_NEAR(single[v.sources[2]]->distance(v.point.location), a, tolerance) << label;
+    for(std::size_t s : v.sources)
+      EXPECT_NEAR(single[s]->distance(v.point.location), a, tolerance) << label;
     for(std::size_t k = 0; k < sources.size(); ++k)
       EXPECT_GE(single[k]->distance(v.point.location), a - tolerance) << label << ": source " << k;
   }
@@ -103,20 +122,8 @@ TEST(Geodesic_voronoi, a_flat_square_has_straight_bisectors_and_the_circumcentre
   const Mesh m = make_grid(11, 0.1, 0.2);
   const std::vector<Point> site{Point(0.21, 0.23, 0), Point(0.77, 0.31, 0), Point(0.45, 0.81, 0)};
   std::vector<Face_location> sources;
-  for(const Point& s : site) {
-    // the face holding s, and its barycentric coordinates
-    for(Face f : faces(m)) {
-      const auto c = face_corners(m, f);
-      const K::Point_2 a(m.point(c[0]).x(), m.point(c[0]).y()), b(m.point(c[1]).x(), m.point(c[1]).y()),
-        e(m.point(c[2]).x(), m.point(c[2]).y()), p(s.x(), s.y());
-      const double area = CGAL::area(a, b, e);
-      const double l0 = CGAL::area(p, b, e) / area, l1 = CGAL::area(a, p, e) / area, l2 = 1 - l0 - l1;
-      if(l0 >= 0 && l1 >= 0 && l2 >= 0) {
-        sources.emplace_back(f, Barycentric{{l0, l1, l2}});
-        break;
-      }
-    }
-  }
+  for(const Point& s : site)
+    sources.push_back(planar_location(m, s));
   ASSERT_EQ(sources.size(), 3u);
   for(std::size_t count : {2, 3}) {
     const std::vector<Face_location> some(sources.begin(), sources.begin() + std::ptrdiff_t(count));
@@ -136,6 +143,26 @@ TEST(Geodesic_voronoi, a_flat_square_has_straight_bisectors_and_the_circumcentre
       EXPECT_EQ(d.bisectors.size(), 3u) << "three bisectors from the circumcentre";
     }
   }
+}
+
+// Four sources at the corners of a square on a flat grid: the four cells meet at its centre, one
+// Voronoi vertex of four cells, with four straight bisectors. (The centre and the bisectors are
+// kept off the grid's vertices and edges.)
+TEST(Geodesic_voronoi, four_cells_meet_at_the_centre_of_a_square)
+{
+  const Mesh m = make_grid(9, 0.125);
+  const Point centre(0.53, 0.47, 0);
+  std::vector<Face_location> sources;
+  for(const auto& [dx, dy] : {std::make_pair(-0.2, -0.2), std::make_pair(0.2, -0.2), std::make_pair(0.2, 0.2),
+                              std::make_pair(-0.2, 0.2)})
+    sources.push_back(planar_location(m, Point(centre.x() + dx, centre.y() + dy, 0)));
+  const auto d = CGAL_ext::geodesic_voronoi_diagram(m, sources);
+  expect_exact_diagram(m, sources, d, "four symmetric sources");
+  ASSERT_EQ(d.vertices.size(), 1u);
+  EXPECT_EQ(d.vertices[0].sources, (std::vector<std::size_t>{0, 1, 2, 3}));
+  EXPECT_LE(std::sqrt(CGAL::squared_distance(d.vertices[0].point.point, centre)), 1e-9);
+  EXPECT_EQ(d.bisectors.size(), 4u);
+  EXPECT_EQ(d.dual_triangles.size(), 4u) << "every three of the four";
 }
 
 // A face point at the middle of a face, with three others around it in the same face: its cell
@@ -158,7 +185,7 @@ TEST(Geodesic_voronoi, a_cell_without_any_vertex_is_found)
       << "cells 1 and " << other << " share a bisector";
   std::size_t around = 0;
   for(const auto& v : d.vertices)
-    around += v.sources[0] == 1 || v.sources[1] == 1;
+    around += std::count(v.sources.begin(), v.sources.end(), std::size_t(1));
   EXPECT_EQ(around, 3u) << "three Voronoi vertices around the small cell";
 }
 

@@ -49,11 +49,11 @@ struct Geodesic_voronoi_diagram
     std::size_t first_source, second_source; ///< the two sources, `first_source < second_source`
     std::vector<Point> points;               ///< a polyline across the faces it cuts
   };
-  /// a point where three cells meet
+  /// a point where three cells meet, or more (four symmetric sources meet at one point)
   struct Vertex
   {
     Point point;
-    std::array<std::size_t, 3> sources; ///< increasing
+    std::vector<std::size_t> sources; ///< increasing, three or more
   };
 
   std::vector<std::size_t> vertex_cell;   ///< by vertex index: the nearest source, or `no_source`
@@ -63,7 +63,8 @@ struct Geodesic_voronoi_diagram
   /// the dual graph (geodesic Delaunay): the pairs of sources whose cells share a bisector,
   /// each once, `first < second`, sorted
   std::vector<std::pair<std::size_t, std::size_t>> dual_edges;
-  /// the triples of sources whose cells meet at a Voronoi vertex, each once, sorted
+  /// the triples of sources whose cells meet at a Voronoi vertex (every three of a vertex where
+  /// more meet), each once, sorted
   std::vector<std::array<std::size_t, 3>> dual_triangles;
   /// parts of faces where more cells meet than the construction could tell apart (0 on every
   /// mesh of the tests); each is left out rather than guessed
@@ -152,10 +153,36 @@ geodesic_voronoi_diagram(const TriangleMesh& tm, const Sources& sources,
     first[i] = builder.position(pieces[i].points.front());
     last[i] = builder.position(pieces[i].points.back());
   }
-  for(const internal::Voronoi_vertex_found& v : builder.vertices())
-    vertex_point.push_back(builder.position(v.location));
   const double tolerance = 1e-9 * cache.mean_edge_length;
-  internal::attach_to_vertices(pieces, first, last, builder.vertices(), vertex_point, tolerance);
+  // A Voronoi vertex on an edge or a vertex of the mesh is found in every face around it, each
+  // face seeing the cells it touches: one vertex, of all their cells.
+  std::vector<internal::Voronoi_vertex_found> voronoi_vertices;
+  std::vector<int> kept_as(builder.vertices().size(), -1);
+  for(std::size_t i = 0; i < builder.vertices().size(); ++i) {
+    const internal::Voronoi_vertex_found& v = builder.vertices()[i];
+    const std::array<double, 3> x = builder.position(v.location);
+    for(std::size_t j = 0; j < voronoi_vertices.size() && kept_as[i] < 0; ++j)
+      if(std::abs(vertex_point[j][0] - x[0]) <= tolerance && std::abs(vertex_point[j][1] - x[1]) <= tolerance &&
+         std::abs(vertex_point[j][2] - x[2]) <= tolerance) {
+        kept_as[i] = int(j);
+        std::vector<int>& cells = voronoi_vertices[j].sources;
+        cells.insert(cells.end(), v.sources.begin(), v.sources.end());
+        std::sort(cells.begin(), cells.end());
+        cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
+      }
+    if(kept_as[i] < 0) {
+      kept_as[i] = int(voronoi_vertices.size());
+      voronoi_vertices.push_back(v);
+      vertex_point.push_back(x);
+    }
+  }
+  for(internal::Bisector_piece& piece : pieces) {
+    if(piece.start_vertex >= 0)
+      piece.start_vertex = kept_as[std::size_t(piece.start_vertex)];
+    if(piece.end_vertex >= 0)
+      piece.end_vertex = kept_as[std::size_t(piece.end_vertex)];
+  }
+  internal::attach_to_vertices(pieces, first, last, voronoi_vertices, vertex_point, tolerance);
   std::set<std::pair<std::size_t, std::size_t>> pairs;
   for(const auto& line : internal::join_pieces(pieces, first, last, tolerance)) {
     typename Diagram::Bisector bisector;
@@ -182,12 +209,16 @@ geodesic_voronoi_diagram(const TriangleMesh& tm, const Sources& sources,
     diagram.bisectors.push_back(std::move(bisector));
   }
   std::set<std::array<std::size_t, 3>> triples;
-  for(const internal::Voronoi_vertex_found& v : builder.vertices()) {
+  for(const internal::Voronoi_vertex_found& v : voronoi_vertices) {
     typename Diagram::Vertex vertex;
     vertex.point = point_of(v.location);
-    for(std::size_t k = 0; k < 3; ++k)
-      vertex.sources[k] = std::size_t(v.sources[k]);
-    triples.insert(vertex.sources);
+    for(int s : v.sources)
+      vertex.sources.push_back(std::size_t(s));
+    const std::vector<std::size_t>& s = vertex.sources;
+    for(std::size_t i = 0; i < s.size(); ++i)
+      for(std::size_t j = i + 1; j < s.size(); ++j)
+        for(std::size_t k = j + 1; k < s.size(); ++k)
+          triples.insert({{s[i], s[j], s[k]}});
     diagram.vertices.push_back(vertex);
   }
   diagram.dual_edges.assign(pairs.begin(), pairs.end());

@@ -42,7 +42,7 @@ struct Bisector_piece
 struct Voronoi_vertex_found
 {
   Face_point location;
-  std::array<int, 3> sources; // increasing
+  std::vector<int> sources; // increasing: three, or more where more cells meet at one point
 };
 
 /// Finds the bisectors and Voronoi vertices face by face. In a face, the nearest source is
@@ -50,7 +50,9 @@ struct Voronoi_vertex_found
 /// change of the nearest source between two points is found by bisection to round-off); then:
 /// - two changes: one bisector between them, its inner points found across the chord;
 /// - three changes (three cells): one Voronoi vertex, found by shrinking a triangle around it
-///   to round-off, and three bisectors to it;
+///   to round-off, and three bisectors to it; more changes around as many distinct cells, in a
+///   part cut down to round-off: a Voronoi vertex of all of them (four cells meet at the middle
+///   of four symmetric sources);
 /// - four, one cell on two opposite arcs of the boundary: it runs across the part, and the two
 ///   other cells each meet it along one bisector;
 /// - more, or a source inside the face: the face is cut in four, each part handled the same way,
@@ -328,8 +330,8 @@ private:
           }
         }
       }
-      if(n == 3 && chain_of_three(crossings)) {
-        int v = find_voronoi_vertex(crossings, seen, out);
+      if(n >= 3 && chain_of_distinct_cells(crossings)) {
+        int v = n == 3 ? find_voronoi_vertex(crossings, seen, out) : -1;
         if(v < 0 && size_of(corner) <= vertex_size) // cut down to round-off around the vertex
           v = add_vertex(corner, crossings, out);
         if(v >= 0) {
@@ -339,8 +341,8 @@ private:
         }
       }
     }
-    const bool three_cells = !hidden_cell && n == 3 && chain_of_three(crossings);
-    if(depth >= (three_cells ? max_vertex_depth : max_depth)) {
+    const bool around_a_vertex = !hidden_cell && n >= 3 && chain_of_distinct_cells(crossings);
+    if(depth >= (around_a_vertex ? max_vertex_depth : max_depth)) {
 #ifdef VORONOI_DEBUG
       std::cerr << "unresolved face " << corner[0].face << " n=" << n << " hidden=" << hidden_cell << ":";
       for(const Crossing& c : crossings) std::cerr << " " << c.before << ">" << c.after;
@@ -391,10 +393,18 @@ private:
     return (s0 >= 0 && s1 >= 0 && s2 >= 0) || (s0 <= 0 && s1 <= 0 && s2 <= 0);
   }
 
-  static bool chain_of_three(const std::vector<Crossing>& c)
+  /// Whether the changes go once around distinct cells (a to b, b to c, ..., back to a): the
+  /// cells of a Voronoi vertex, when the part is small enough.
+  static bool chain_of_distinct_cells(const std::vector<Crossing>& c)
   {
-    return c[0].after == c[1].before && c[1].after == c[2].before && c[2].after == c[0].before &&
-           c[0].before != c[1].before && c[1].before != c[2].before && c[0].before != c[2].before;
+    for(std::size_t i = 0; i < c.size(); ++i) {
+      if(c[i].after != c[(i + 1) % c.size()].before)
+        return false;
+      for(std::size_t j = 0; j < i; ++j)
+        if(c[i].before == c[j].before)
+          return false;
+    }
+    return true;
   }
 
   /// The point where the three cells of `crossings` meet inside the part: a triangle with a
@@ -446,7 +456,8 @@ private:
     v.location.face = t[0].face;
     for(std::size_t k = 0; k < 3; ++k)
       v.location.b[k] = (t[0].b[k] + t[1].b[k] + t[2].b[k]) / 3;
-    v.sources = {{crossings[0].before, crossings[1].before, crossings[2].before}};
+    for(const Crossing& c : crossings)
+      v.sources.push_back(c.before);
     std::sort(v.sources.begin(), v.sources.end());
     out.vertices.push_back(v);
     return int(out.vertices.size()) - 1;
@@ -556,7 +567,7 @@ inline void attach_to_vertices(std::vector<Bisector_piece>& pieces, std::vector<
     if(near(first_point[i], last_point[i]))
       continue;
     for(std::size_t v = 0; v < vertices.size(); ++v) {
-      const std::array<int, 3>& s = vertices[v].sources;
+      const std::vector<int>& s = vertices[v].sources;
       const bool of_both = std::count(s.begin(), s.end(), p.first_source) && std::count(s.begin(), s.end(), p.second_source);
       if(!of_both)
         continue;
