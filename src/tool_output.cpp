@@ -44,15 +44,14 @@ void write_files_atomically(const std::vector<Output_file>& files)
   }
 }
 
-/// One point of a polyline, full precision.
+} // namespace
+
 std::string point_text(const Point& p)
 {
   char text[96];
   std::snprintf(text, sizeof(text), "%.17g %.17g %.17g", p.x(), p.y(), p.z());
   return text;
 }
-
-} // namespace
 
 void write_outputs(const std::vector<Output_file>& outputs)
 {

@@ -65,6 +65,9 @@ bool write_labels_ply(std::ostream& os, const Soup& soup, const std::vector<doub
 /// A colour per source index (hues far apart for neighbouring indices), grey for -1.
 CGAL::IO::Color label_color(long label);
 
+/// A point as `x y z`, each with 17 significant digits.
+std::string point_text(const Point& p);
+
 // ---------------------------------------------------------------------------------------------
 // Paths, from the source to the target
 

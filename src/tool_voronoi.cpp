@@ -16,17 +16,6 @@
 
 namespace geodesic_tool {
 
-namespace {
-
-std::string point_line(const Point& p)
-{
-  char text[96];
-  std::snprintf(text, sizeof(text), "%.17g %.17g %.17g", p.x(), p.y(), p.z());
-  return text;
-}
-
-} // namespace
-
 void add_voronoi_command(CLI::App& app, Voronoi_options& options)
 {
   CLI::App* cmd = app.add_subcommand(
@@ -55,7 +44,7 @@ bool write_bisectors_txt(std::ostream& os, const std::vector<Voronoi_result::Cur
     if(i > 0)
       os << "\n";
     for(const Point& p : bisectors[i].points)
-      os << point_line(p) << " " << bisectors[i].first_source << " " << bisectors[i].second_source << "\n";
+      os << point_text(p) << " " << bisectors[i].first_source << " " << bisectors[i].second_source << "\n";
   }
   return bool(os);
 }
@@ -65,7 +54,7 @@ bool write_bisectors_obj(std::ostream& os, const std::vector<Voronoi_result::Cur
   os << "# geodesic Voronoi bisectors from the geodesic tool: one polyline per bisector\n";
   for(const auto& b : bisectors)
     for(const Point& p : b.points)
-      os << "v " << point_line(p) << "\n";
+      os << "v " << point_text(p) << "\n";
   std::size_t first = 1;
   for(const auto& b : bisectors) {
     os << "# sources " << b.first_source << " " << b.second_source << "\nl";
@@ -84,7 +73,7 @@ bool write_dual_obj(std::ostream& os, const std::vector<Point>& sources,
   os << "# geodesic Delaunay graph from the geodesic tool: the sources, neighbouring cells, cells meeting at a "
         "Voronoi vertex\n";
   for(const Point& p : sources)
-    os << "v " << point_line(p) << "\n";
+    os << "v " << point_text(p) << "\n";
   for(const auto& e : edges)
     os << "l " << e.first + 1 << " " << e.second + 1 << "\n";
   for(const auto& t : triangles)

@@ -156,25 +156,38 @@ geodesic_voronoi_diagram(const TriangleMesh& tm, const Sources& sources,
   const double tolerance = 1e-9 * cache.mean_edge_length;
   // A Voronoi vertex on an edge or a vertex of the mesh is found in every face around it, each
   // face seeing the cells it touches: one vertex, of all their cells.
-  std::vector<internal::Voronoi_vertex_found> voronoi_vertices;
-  std::vector<int> kept_as(builder.vertices().size(), -1);
-  for(std::size_t i = 0; i < builder.vertices().size(); ++i) {
-    const internal::Voronoi_vertex_found& v = builder.vertices()[i];
-    const std::array<double, 3> x = builder.position(v.location);
-    for(std::size_t j = 0; j < voronoi_vertices.size() && kept_as[i] < 0; ++j)
-      if(std::abs(vertex_point[j][0] - x[0]) <= tolerance && std::abs(vertex_point[j][1] - x[1]) <= tolerance &&
-         std::abs(vertex_point[j][2] - x[2]) <= tolerance) {
-        kept_as[i] = int(j);
-        std::vector<int>& cells = voronoi_vertices[j].sources;
-        cells.insert(cells.end(), v.sources.begin(), v.sources.end());
-        std::sort(cells.begin(), cells.end());
-        cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
+  const std::vector<internal::Voronoi_vertex_found>& found = builder.vertices();
+  std::vector<std::array<double, 3>> found_point;
+  for(const internal::Voronoi_vertex_found& v : found)
+    found_point.push_back(builder.position(v.location));
+  std::vector<std::size_t> by_x(found.size()), root(found.size());
+  for(std::size_t i = 0; i < found.size(); ++i)
+    by_x[i] = root[i] = i;
+  std::sort(by_x.begin(), by_x.end(), [&](std::size_t a, std::size_t b) {
+    return found_point[a][0] < found_point[b][0] || (found_point[a][0] == found_point[b][0] && a < b);
+  });
+  for(std::size_t i = 0; i < by_x.size(); ++i)
+    for(std::size_t j = i; j-- > 0 && found_point[by_x[i]][0] - found_point[by_x[j]][0] <= tolerance;) {
+      const std::array<double, 3>&x = found_point[by_x[i]], &y = found_point[by_x[j]];
+      if(std::abs(x[1] - y[1]) <= tolerance && std::abs(x[2] - y[2]) <= tolerance) {
+        root[by_x[i]] = root[by_x[j]];
+        break;
       }
-    if(kept_as[i] < 0) {
-      kept_as[i] = int(voronoi_vertices.size());
-      voronoi_vertices.push_back(v);
-      vertex_point.push_back(x);
     }
+  std::vector<internal::Voronoi_vertex_found> voronoi_vertices;
+  std::vector<int> kept_as(found.size(), -1);
+  for(std::size_t i = 0; i < found.size(); ++i) // in the order found: the first of each point is kept
+    if(kept_as[root[i]] < 0) {
+      kept_as[root[i]] = int(voronoi_vertices.size());
+      voronoi_vertices.push_back(found[root[i]]);
+      vertex_point.push_back(found_point[root[i]]);
+    }
+  for(std::size_t i = 0; i < found.size(); ++i) {
+    kept_as[i] = kept_as[root[i]];
+    std::vector<int>& cells = voronoi_vertices[std::size_t(kept_as[i])].sources;
+    cells.insert(cells.end(), found[i].sources.begin(), found[i].sources.end());
+    std::sort(cells.begin(), cells.end());
+    cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
   }
   for(internal::Bisector_piece& piece : pieces) {
     if(piece.start_vertex >= 0)

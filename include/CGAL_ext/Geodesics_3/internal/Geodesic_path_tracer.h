@@ -47,6 +47,29 @@ struct Surface_location
   }
 };
 
+/// The point of cache face `face` with snapped barycentric coordinates `b` (see
+/// `snapped_barycentric`): a vertex when two coordinates are 0, a point of an edge when one is.
+inline Surface_location surface_location(const Mesh_cache& m, int face, const std::array<double, 3>& b)
+{
+  const int zeros = (b[0] == 0) + (b[1] == 0) + (b[2] == 0);
+  for(int k = 0; k < 3; ++k) {
+    if(zeros == 2 && b[std::size_t(k)] > 0)
+      return Surface_location::at_vertex(m.source(3 * face + k));
+    if(zeros == 1 && b[std::size_t((k + 2) % 3)] == 0) { // on half-edge 3f+k
+      Surface_location p;
+      p.kind = Surface_location::EDGE;
+      p.halfedge = 3 * face + k;
+      p.t = b[std::size_t((k + 1) % 3)];
+      return p;
+    }
+  }
+  Surface_location p;
+  p.kind = Surface_location::FACE;
+  p.face = face;
+  p.barycentric = b;
+  return p;
+}
+
 /// Distances at any surface point and shortest paths back to the nearest source, read from the
 /// windows an `MMP_solver` kept on the edges. Every member is const and reads only what the
 /// solver no longer writes, so that any number of threads may query at once.
@@ -89,23 +112,7 @@ public:
   {
     std::array<double, 3> b = checked_barycentric(m_mesh, face, coordinates, "target");
     m_mesh.relocate_face_point(face, b);
-    const int zeros = (b[0] == 0) + (b[1] == 0) + (b[2] == 0);
-    for(int k = 0; k < 3; ++k) {
-      if(zeros == 2 && b[k] > 0)
-        return Surface_location::at_vertex(m_mesh.source(3 * face + k));
-      if(zeros == 1 && b[(k + 2) % 3] == 0) { // on half-edge 3f+k
-        Surface_location p;
-        p.kind = Surface_location::EDGE;
-        p.halfedge = 3 * face + k;
-        p.t = b[(k + 1) % 3];
-        return p;
-      }
-    }
-    Surface_location p;
-    p.kind = Surface_location::FACE;
-    p.face = face;
-    p.barycentric = b;
-    return p;
+    return surface_location(m_mesh, face, b);
   }
 
   Surface_location locate_vertex(int v) const

@@ -148,7 +148,7 @@ private:
     const int cell = label_of_vertex(m_mesh.source(3 * f));
     for(int k = 0; k < 3; ++k) {
       const int h = 3 * f + k;
-      if(label_of_vertex(m_mesh.source(h)) != cell)
+      if(k > 0 && label_of_vertex(m_mesh.source(h)) != cell)
         return false;
       for(const Edge_window* w = m_windows.windows_of_edge(h); w; w = w->next)
         if(w->source != cell)
@@ -184,24 +184,7 @@ private:
   // As the tracer's public queries see the point: coordinates below the snap are 0.
   Surface_location location(const Face_point& p) const
   {
-    const std::array<double, 3> b = snapped_barycentric(p.b);
-    const int zeros = (b[0] == 0) + (b[1] == 0) + (b[2] == 0);
-    for(int k = 0; k < 3; ++k) {
-      if(zeros == 2 && b[std::size_t(k)] > 0)
-        return Surface_location::at_vertex(m_mesh.source(3 * p.face + k));
-      if(zeros == 1 && b[std::size_t((k + 2) % 3)] == 0) {
-        Surface_location s;
-        s.kind = Surface_location::EDGE;
-        s.halfedge = 3 * p.face + k;
-        s.t = b[std::size_t((k + 1) % 3)];
-        return s;
-      }
-    }
-    Surface_location s;
-    s.kind = Surface_location::FACE;
-    s.face = p.face;
-    s.barycentric = b;
-    return s;
+    return surface_location(m_mesh, p.face, snapped_barycentric(p.b));
   }
 
   static Face_point along(const Face_point& p, const Face_point& q, double t)
@@ -495,9 +478,7 @@ private:
     const Face_point m = along(p, q, 0.5);
     // the chord in the plane of the face: corner 0 at the origin, corner 1 on +x
     const Halfedge_frame& f = m_mesh.frame[3 * p.face];
-    auto to_plane = [&](const Face_point& x) {
-      return std::array<double, 2>{{x.b[1] * f.length + x.b[2] * f.apex_x, x.b[2] * f.apex_y}};
-    };
+    auto to_plane = [&](const Face_point& x) { return m_mesh.point_in_frame(3 * p.face, x.b); };
     auto from_plane = [&](double x, double y) {
       Face_point r;
       r.face = p.face;
