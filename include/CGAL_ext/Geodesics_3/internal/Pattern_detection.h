@@ -1,0 +1,847 @@
+// Copyright (c) 2026 The CGAL_ext geodesics developers.
+#ifndef CGAL_EXT_GEODESICS_3_INTERNAL_PATTERN_DETECTION_H
+#define CGAL_EXT_GEODESICS_3_INTERNAL_PATTERN_DETECTION_H
+
+// Repetitive pattern detection (thesis chapter 5): the pipeline from a marked patch to its
+// instances and their arrangement, on vertex indices. Every geodesic comes from the package's
+// applications: the patch and the search neighbourhoods from local distance rows, the samples
+// from exact farthest-point sampling, the signatures and the sample-to-sample distances from one
+// local distance row per sample, the arrangement from the geodesic Voronoi diagram.
+//
+// Steps, each in its own header: curvatures (Pattern_curvature.h), signatures
+// (Pattern_signatures.h), clustering of matches (Pattern_clustering.h), energy refinement
+// (Pattern_refinement.h); this file does the sampling, the matching, the region growing
+// (Algorithm 7), the centre of each instance and the arrangement.
+
+#include <CGAL_ext/Geodesics_3/Geodesic_error.h>
+#include <CGAL_ext/Geodesics_3/internal/Pattern_curvature.h>
+#include <CGAL_ext/Geodesics_3/internal/Pattern_refinement.h>
+#include <CGAL_ext/Geodesics_3/internal/Pattern_signatures.h>
+#include <CGAL_ext/farthest_point_sampling.h>
+#include <CGAL_ext/geodesic_distance_matrix.h>
+#include <CGAL_ext/geodesic_distances.h>
+#include <CGAL_ext/geodesic_voronoi_diagram.h>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <numeric>
+#include <queue>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL_ext {
+namespace Geodesics_3 {
+namespace internal {
+
+/// The constants of the pipeline; lengths are relative to the patch radius (the largest
+/// geodesic distance from the patch's centre to its vertices).
+struct Pattern_settings
+{
+  double sample_spacing = 1.0 / 3;   ///< covering radius of the sampling
+  double signature_radius = 1.0;     ///< radius of the disk of a signature
+  int signature_rings = 6;           ///< N: rings of a signature
+  double match_tolerance = 0.35;     ///< epsilon of Eq. 5.5, relative to the patch's mean signature norm
+  std::size_t matches_per_sample = 24; ///< candidate matches kept per patch sample, best first
+  double consistency_cutoff = 0.7;   ///< c0 of Eq. 5.1
+  double alpha = 1, beta = 1, gamma = 1; ///< weights of Eq. 5.4
+  double search_radius = 3.0;        ///< how far from an instance's centre its neighbours are sought
+  double scale_min = 1, scale_max = 1; ///< instance size over patch size
+  int threads = 0;
+};
+
+/// The marked patch, by vertex index: its vertices and the centre, or a centre and a radius.
+struct Pattern_patch_indices
+{
+  std::size_t center = std::size_t(-1); ///< set with `radius`, or left for a vertex list
+  double radius = 0;
+  std::vector<std::size_t> vertices;    ///< a vertex list (when `radius` is 0)
+};
+
+struct Pattern_step_times
+{
+  double sampling = 0, signatures = 0, matching = 0, clustering = 0, optimization = 0, arrangement = 0;
+  std::size_t samples = 0, patch_samples = 0, matches = 0, clusters = 0, rounds = 0;
+  double patch_radius = 0;
+};
+
+struct Detected_instance
+{
+  std::size_t center = 0; ///< vertex index
+  double scale = 1;
+  double energy = 0;
+  std::vector<std::size_t> vertices; ///< vertex indices, increasing
+  /// (patch sample vertex, its image vertex), for the patch samples that have an image
+  std::vector<std::pair<std::size_t, std::size_t>> correspondence;
+};
+
+struct Detection_result
+{
+  std::vector<Detected_instance> instances; ///< the marked patch first
+  std::vector<std::pair<std::size_t, std::size_t>> arrangement_edges;
+  std::vector<std::array<std::size_t, 3>> arrangement_triangles;
+  Pattern_step_times times;
+};
+
+template <bool parallel, class TriangleMesh, class VertexPointMap, class VertexIndexMap>
+class Pattern_detector
+{
+  typedef boost::graph_traits<TriangleMesh> GT;
+  typedef typename GT::vertex_descriptor vertex_descriptor;
+  typedef std::vector<std::pair<std::size_t, double>> Row;
+  typedef std::chrono::steady_clock Clock;
+  static constexpr std::size_t none = std::size_t(-1);
+
+public:
+  Pattern_detector(const TriangleMesh& tm, VertexPointMap vpm, VertexIndexMap vim, const Pattern_settings& settings)
+    : m_tm(tm), m_vpm(vpm), m_vim(vim), m_settings(settings)
+  {
+    m_vertex.resize(num_vertices(tm));
+    for(vertex_descriptor v : vertices(tm))
+      m_vertex[std::size_t(get(vim, v))] = v;
+    check_settings();
+  }
+
+  Detection_result run(const Pattern_patch_indices& patch)
+  {
+    Detection_result result;
+    m_times = &result.times;
+    auto start = Clock::now();
+    set_patch(patch);
+    sample();
+    m_times->sampling = seconds_since(start);
+    start = Clock::now();
+    compute_signatures();
+    m_times->signatures = seconds_since(start);
+    grow_regions();
+    start = Clock::now();
+    place_centres();
+    m_times->optimization += seconds_since(start);
+    start = Clock::now();
+    result.instances = collect_instances();
+    arrange(result);
+    m_times->arrangement = seconds_since(start);
+    return result;
+  }
+
+private:
+  struct Instance
+  {
+    Pattern_correspondence correspondence;
+    std::size_t scale_step = 0;
+    std::size_t center_sample = 0;
+    std::size_t center_vertex = 0;
+  };
+
+  static double seconds_since(Clock::time_point start)
+  {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+  }
+
+  auto solver_parameters(double max_distance) const
+  {
+    return CGAL_ext::parameters::vertex_point_map(m_vpm).vertex_index_map(m_vim).number_of_threads(
+      m_settings.threads).max_distance(max_distance);
+  }
+  typedef std::conditional_t<parallel, CGAL::Parallel_tag, CGAL::Sequential_tag> Concurrency;
+
+  void check_settings() const
+  {
+    const Pattern_settings& s = m_settings;
+    const auto positive = [](double x, const char* what) {
+      if(!(x > 0) || !std::isfinite(x))
+        throw Geodesic_error(std::string("pattern detection: ") + what + " must be positive and finite, got " +
+                             std::to_string(x));
+    };
+    positive(s.sample_spacing, "sample_spacing");
+    positive(s.signature_radius, "signature_radius");
+    positive(s.match_tolerance, "match_tolerance");
+    positive(s.search_radius, "search_radius");
+    positive(s.scale_min, "the smallest scale");
+    positive(s.scale_max, "the largest scale");
+    if(s.scale_min > s.scale_max)
+      throw Geodesic_error("pattern detection: empty scale range " + std::to_string(s.scale_min) + ":" +
+                           std::to_string(s.scale_max));
+    if(s.signature_rings < 1)
+      throw Geodesic_error("pattern detection: signature_rings must be at least 1");
+    if(s.matches_per_sample < 1)
+      throw Geodesic_error("pattern detection: matches_per_sample must be at least 1");
+    if(!(s.consistency_cutoff >= 0 && s.consistency_cutoff < 1))
+      throw Geodesic_error("pattern detection: consistency_cutoff must be in [0, 1), got " +
+                           std::to_string(s.consistency_cutoff));
+    if(!(s.alpha >= 0 && s.beta >= 0 && s.gamma >= 0))
+      throw Geodesic_error("pattern detection: the energy weights must not be negative");
+    if(s.threads < 0)
+      throw Geodesic_error("pattern detection: number_of_threads must not be negative");
+  }
+
+  // One local distance row from `source`, within `radius`.
+  Row local_row(std::size_t source, double radius) const
+  {
+    Row row;
+    const std::vector<vertex_descriptor> sources{m_vertex[source]};
+    geodesic_sparse_distance_rows<Concurrency>(
+      m_tm, sources, [&](std::size_t, const Row& entries) { row = entries; }, solver_parameters(radius));
+    return row;
+  }
+
+  // The patch's vertices, centre and radius.
+  void set_patch(const Pattern_patch_indices& patch)
+  {
+    const std::size_t n = m_vertex.size();
+    m_in_patch.assign(n, false);
+    if(patch.radius != 0 || patch.vertices.empty()) {
+      if(patch.center >= n)
+        throw Geodesic_error("pattern detection: the patch centre " + std::to_string(patch.center) +
+                             " is not a vertex (the mesh has " + std::to_string(n) + ")");
+      if(!(patch.radius > 0) || !std::isfinite(patch.radius))
+        throw Geodesic_error("pattern detection: the patch radius must be positive, got " +
+                             std::to_string(patch.radius));
+      m_center = patch.center;
+      const Row row = local_row(m_center, patch.radius * (1 + 1e-12));
+      double farthest = 0;
+      for(const auto& [v, d] : row)
+        if(d <= patch.radius) {
+          m_in_patch[v] = true;
+          farthest = std::max(farthest, d);
+        }
+      // the disk covers its whole component when a longer row reaches nothing more
+      const Row beyond = local_row(m_center, patch.radius * 1.5);
+      if(beyond.size() == row.size() && beyond.size() > 0 && farthest < patch.radius)
+        throw Geodesic_error("pattern detection: the patch radius " + std::to_string(patch.radius) +
+                             " is larger than the mesh around the centre (every vertex there is within " +
+                             std::to_string(farthest) + ")");
+      m_radius = patch.radius;
+    } else {
+      for(std::size_t v : patch.vertices) {
+        if(v >= n)
+          throw Geodesic_error("pattern detection: patch vertex " + std::to_string(v) +
+                               " is out of range (the mesh has " + std::to_string(n) + " vertices)");
+        m_in_patch[v] = true;
+      }
+      set_patch_of_vertices(patch.vertices);
+    }
+    m_patch_vertices.clear();
+    for(std::size_t v = 0; v < n; ++v)
+      if(m_in_patch[v])
+        m_patch_vertices.push_back(v);
+    m_times->patch_radius = m_radius;
+    double total = 0;
+    std::size_t count = 0;
+    for(auto e : edges(m_tm)) {
+      total += std::sqrt(double(CGAL::squared_distance(get(m_vpm, source(halfedge(e, m_tm), m_tm)),
+                                                       get(m_vpm, target(halfedge(e, m_tm), m_tm)))));
+      ++count;
+    }
+    m_mean_edge = count ? total / double(count) : 0.0;
+  }
+
+  // A vertex list: connected, with a border; its centre is the vertex farthest from its border
+  // (on its medial axis: the landmark of an elongated patch), its radius the farthest vertex
+  // from that centre.
+  void set_patch_of_vertices(const std::vector<std::size_t>& list)
+  {
+    std::vector<std::size_t> stack{list.front()};
+    std::vector<bool> seen(m_vertex.size(), false);
+    seen[list.front()] = true;
+    std::size_t reached = 0;
+    std::vector<vertex_descriptor> border;
+    while(!stack.empty()) {
+      const std::size_t v = stack.back();
+      stack.pop_back();
+      ++reached;
+      bool on_border = CGAL::is_border(m_vertex[v], m_tm) != boost::none;
+      for(vertex_descriptor w : CGAL::vertices_around_target(m_vertex[v], m_tm)) {
+        const std::size_t wi = std::size_t(get(m_vim, w));
+        if(!m_in_patch[wi])
+          on_border = true;
+        else if(!seen[wi]) {
+          seen[wi] = true;
+          stack.push_back(wi);
+        }
+      }
+      if(on_border)
+        border.push_back(m_vertex[v]);
+    }
+    std::size_t distinct = 0;
+    for(std::size_t v = 0; v < m_vertex.size(); ++v)
+      distinct += m_in_patch[v];
+    if(reached != distinct)
+      throw Geodesic_error("pattern detection: the patch vertices are not connected (" + std::to_string(reached) +
+                           " of " + std::to_string(distinct) + " reached from vertex " +
+                           std::to_string(list.front()) + " through patch edges)");
+    if(border.size() == distinct && distinct < 3)
+      throw Geodesic_error("pattern detection: the patch has fewer than 3 vertices");
+    std::vector<double> from_border(m_vertex.size(), 0.0);
+    geodesic_distances<Concurrency>(m_tm, CGAL::make_property_map(from_border), border,
+                                    CGAL_ext::parameters::vertex_point_map(m_vpm).vertex_index_map(m_vim));
+    m_center = list.front();
+    for(std::size_t v = 0; v < m_vertex.size(); ++v)
+      if(m_in_patch[v] && from_border[v] > from_border[m_center])
+        m_center = v;
+    // a bound on how far the patch reaches: the sum of its edges' lengths
+    double bound = 0;
+    for(auto e : edges(m_tm)) {
+      const std::size_t a = std::size_t(get(m_vim, source(halfedge(e, m_tm), m_tm)));
+      const std::size_t b = std::size_t(get(m_vim, target(halfedge(e, m_tm), m_tm)));
+      if(m_in_patch[a] && m_in_patch[b])
+        bound += std::sqrt(double(CGAL::squared_distance(get(m_vpm, m_vertex[a]), get(m_vpm, m_vertex[b]))));
+    }
+    m_radius = 0;
+    for(const auto& [v, d] : local_row(m_center, bound * (1 + 1e-9)))
+      if(m_in_patch[v])
+        m_radius = std::max(m_radius, d);
+    if(!(m_radius > 0))
+      throw Geodesic_error("pattern detection: the patch has no extent (all its vertices are at one point)");
+  }
+
+  // Exact farthest-point samples, the patch's centre first, covering the mesh within the spacing.
+  void sample()
+  {
+    m_spacing = m_settings.sample_spacing * m_radius;
+    std::vector<vertex_descriptor> samples;
+    m_cell.assign(m_vertex.size(), 0);
+    farthest_point_sampling<Concurrency>(
+      m_tm, m_vertex.size(), std::back_inserter(samples),
+      CGAL_ext::parameters::vertex_point_map(m_vpm).vertex_index_map(m_vim).number_of_threads(m_settings.threads)
+        .first_sample(m_vertex[m_center]).covering_radius(m_spacing).vertex_source_map(CGAL::make_property_map(m_cell)));
+    m_sample_vertex.clear();
+    m_sample_of_vertex.assign(m_vertex.size(), none);
+    for(vertex_descriptor v : samples) {
+      m_sample_of_vertex[std::size_t(get(m_vim, v))] = m_sample_vertex.size();
+      m_sample_vertex.push_back(std::size_t(get(m_vim, v)));
+    }
+    m_patch_sample.clear();
+    for(std::size_t s = 0; s < m_sample_vertex.size(); ++s)
+      if(m_in_patch[m_sample_vertex[s]])
+        m_patch_sample.push_back(s);
+    if(m_patch_sample.size() < 3)
+      throw Geodesic_error("pattern detection: the patch holds " + std::to_string(m_patch_sample.size()) +
+                           " samples, too few to match (mark a larger patch or lower sample_spacing)");
+    m_landmark = std::size_t(std::find(m_patch_sample.begin(), m_patch_sample.end(), std::size_t(0)) -
+                             m_patch_sample.begin());
+    m_times->samples = m_sample_vertex.size();
+    m_times->patch_samples = m_patch_sample.size();
+  }
+
+  // The scales searched: a geometric progression over the range, about 10 % apart.
+  void set_scales()
+  {
+    m_scales.clear();
+    const double a = m_settings.scale_min, b = m_settings.scale_max;
+    const int steps = a == b ? 1 : 1 + int(std::ceil(std::log(b / a) / std::log(1.1)));
+    for(int i = 0; i < steps; ++i)
+      m_scales.push_back(steps == 1 ? a : a * std::pow(b / a, double(i) / (steps - 1)));
+  }
+
+  // Curvatures, then one local row per sample: its signature's ring sums and its distances to
+  // the samples near it.
+  void compute_signatures()
+  {
+    set_scales();
+    m_curvature = vertex_principal_curvatures(m_tm, m_vpm, m_vim, parallel && m_settings.threads != 1);
+    m_area = vertex_areas(m_tm, m_vpm, m_vim);
+    const std::vector<Principal_curvatures>& curvature = m_curvature;
+    const std::vector<double>& area = m_area;
+    const double signature_radius = m_settings.signature_radius * m_radius;
+    const double largest = signature_radius * std::max(1.0, m_scales.back());
+    const double smallest = signature_radius * std::min(1.0, m_scales.front());
+    const double band = smallest / (4.0 * m_settings.signature_rings);
+    m_band_width = band;
+    const std::size_t bands = std::size_t(std::ceil(largest / band)) + 1;
+    // pairs of samples farther than any pair of the patch at the largest scale, with 10 % to
+    // spare, cannot be consistent above the cut-off: they are not kept
+    m_pair_radius = 2.2 * m_radius * std::max(1.0, m_scales.back());
+    const double row_radius = std::max(m_pair_radius, largest);
+    const std::size_t n = m_sample_vertex.size();
+    m_rings.assign(n, Ring_sums(bands, band));
+    m_near.assign(n, Row());
+    std::vector<vertex_descriptor> sources;
+    for(std::size_t v : m_sample_vertex)
+      sources.push_back(m_vertex[v]);
+    geodesic_sparse_distance_rows<Concurrency>(
+      m_tm, sources,
+      [&](std::size_t s, const Row& entries) {
+        for(const auto& [v, d] : entries) {
+          if(d < largest)
+            m_rings[s].add(d, area[v], curvature[v]);
+          const std::size_t t = m_sample_of_vertex[v];
+          if(t != none && t != s && d <= m_pair_radius)
+            m_near[s].emplace_back(t, d);
+        }
+        std::sort(m_near[s].begin(), m_near[s].end());
+      },
+      solver_parameters(row_radius));
+
+    const int rings = m_settings.signature_rings;
+    m_signature.assign(m_scales.size(), std::vector<std::vector<double>>(n));
+    for(std::size_t k = 0; k < m_scales.size(); ++k)
+      for(std::size_t s = 0; s < n; ++s)
+        m_signature[k][s] = m_rings[s].signature(signature_radius * m_scales[k], rings);
+    m_patch_signature.clear();
+    double norm = 0;
+    for(std::size_t s : m_patch_sample) {
+      m_patch_signature.push_back(m_rings[s].signature(signature_radius, rings));
+      norm += signature_distance(m_patch_signature.back(), std::vector<double>(m_patch_signature.back().size(), 0.0));
+    }
+    m_signature_norm = norm / double(m_patch_sample.size());
+    if(!(m_signature_norm > 0))
+      throw Geodesic_error("pattern detection: the patch is flat (no curvature to match)");
+  }
+
+  double sample_distance(std::size_t a, std::size_t b) const
+  {
+    if(a == b)
+      return 0;
+    const Row& row = m_near[a];
+    const auto it = std::lower_bound(row.begin(), row.end(), std::make_pair(b, -std::numeric_limits<double>::infinity()));
+    return it != row.end() && it->first == b ? it->second : std::numeric_limits<double>::infinity();
+  }
+
+  double patch_distance(std::size_t i, std::size_t j) const
+  {
+    return sample_distance(m_patch_sample[i], m_patch_sample[j]);
+  }
+
+  double signature_cost(std::size_t i, std::size_t scale_step, std::size_t q) const
+  {
+    return signature_distance(m_patch_signature[i], m_signature[scale_step][q]) / m_signature_norm;
+  }
+
+  // The samples within `radius` of sample `from`, by shortest paths in the graph of near samples
+  // (an upper bound of the geodesic distance: the neighbourhood is never larger than asked).
+  std::vector<std::size_t> neighbourhood(std::size_t from, double radius) const
+  {
+    std::vector<double> distance(m_sample_vertex.size(), std::numeric_limits<double>::infinity());
+    typedef std::pair<double, std::size_t> Entry;
+    std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
+    distance[from] = 0;
+    queue.emplace(0.0, from);
+    std::vector<std::size_t> found;
+    while(!queue.empty()) {
+      const auto [d, s] = queue.top();
+      queue.pop();
+      if(d > distance[s])
+        continue;
+      found.push_back(s);
+      for(const auto& [t, e] : m_near[s])
+        if(d + e <= radius && d + e < distance[t]) {
+          distance[t] = d + e;
+          queue.emplace(d + e, t);
+        }
+    }
+    std::sort(found.begin(), found.end());
+    return found;
+  }
+
+  // Algorithm 7: from the marked patch, each new instance searches its own neighbourhood for
+  // more, until no new one appears.
+  void grow_regions()
+  {
+    const std::size_t k = m_patch_sample.size();
+    m_used.assign(m_sample_vertex.size(), false);
+    Instance marked;
+    marked.correspondence.image = m_patch_sample;
+    marked.center_sample = 0;
+    marked.center_vertex = m_center;
+    marked.correspondence.mapped = k;
+    marked.correspondence.energy = 0;
+    marked.correspondence.mean_consistency = 1;
+    marked.scale_step = none;
+    m_instances.assign(1, marked);
+    for(std::size_t s : m_patch_sample)
+      m_used[s] = true;
+    std::queue<std::size_t> to_search;
+    to_search.push(0);
+    const auto search = [&](std::size_t center_sample, double scale) {
+      ++m_times->rounds;
+      for(Instance& found : search_around(center_sample, scale)) {
+        m_instances.push_back(found);
+        for(std::size_t q : found.correspondence.image)
+          if(q != Pattern_correspondence::unmapped)
+            m_used[q] = true;
+        to_search.push(m_instances.size() - 1);
+      }
+    };
+    std::vector<std::size_t> seeds;
+    std::size_t next_seed = 0;
+    for(;;) {
+      while(!to_search.empty()) {
+        const Instance& from = m_instances[to_search.front()];
+        to_search.pop();
+        search(from.center_sample, from.scale_step == none ? 1.0 : m_scales[from.scale_step]);
+      }
+      // Region growing reaches the instances near others; an instance farther than the search
+      // radius from all found ones is reached from a seed: a free sample that looks like the
+      // patch's centre, away from every instance found so far.
+      if(next_seed == 0)
+        seeds = landmark_lookalikes();
+      while(next_seed < seeds.size() && !is_free_seed(seeds[next_seed]))
+        ++next_seed;
+      if(next_seed == seeds.size())
+        break;
+      search(seeds[next_seed++], 1.0);
+    }
+  }
+
+  // Free samples whose signature is within twice the tolerance of the landmark's (as for accepting
+  // an instance), the most alike first.
+  std::vector<std::size_t> landmark_lookalikes() const
+  {
+    std::vector<std::pair<double, std::size_t>> alike;
+    for(std::size_t q = 0; q < m_sample_vertex.size(); ++q) {
+      if(m_used[q])
+        continue;
+      double cost = std::numeric_limits<double>::infinity();
+      for(std::size_t step = 0; step < m_scales.size(); ++step)
+        cost = std::min(cost, signature_cost(m_landmark, step, q));
+      if(cost <= 2 * m_settings.match_tolerance)
+        alike.emplace_back(cost, q);
+    }
+    std::sort(alike.begin(), alike.end());
+    std::vector<std::size_t> out;
+    for(const auto& a : alike)
+      out.push_back(a.second);
+    return out;
+  }
+
+  bool is_free_seed(std::size_t q) const
+  {
+    if(m_used[q])
+      return false;
+    for(const Instance& instance : m_instances) {
+      const double scale = instance.scale_step == none ? 1.0 : m_scales[instance.scale_step];
+      if(sample_distance(q, instance.center_sample) <= scale * m_radius * 1.5)
+        return false;
+    }
+    return true;
+  }
+
+  std::vector<Instance> search_around(std::size_t center_sample, double scale)
+  {
+    auto start = Clock::now();
+    const std::size_t k = m_patch_sample.size();
+    const double reach = (m_settings.search_radius * std::max(scale, m_scales.back()) + 1.0) * m_radius;
+    const std::vector<std::size_t> candidates = neighbourhood(center_sample, reach);
+    std::vector<bool> in_neighbourhood(m_sample_vertex.size(), false);
+    for(std::size_t q : candidates)
+      in_neighbourhood[q] = true;
+
+    // candidate matches: per patch sample, the samples (and their best scale) whose signature is
+    // within the tolerance, the closest first
+    std::vector<Pattern_match> matches;
+    for(std::size_t i = 0; i < k; ++i) {
+      std::vector<Pattern_match> mine;
+      for(std::size_t q : candidates) {
+        if(m_used[q])
+          continue;
+        Pattern_match best{i, q, 1.0, std::numeric_limits<double>::infinity()};
+        for(std::size_t step = 0; step < m_scales.size(); ++step) {
+          const double cost = signature_cost(i, step, q);
+          if(cost < best.signature_distance) {
+            best.signature_distance = cost;
+            best.scale = m_scales[step];
+          }
+        }
+        if(best.signature_distance <= m_settings.match_tolerance)
+          mine.push_back(best);
+      }
+      const std::size_t keep = std::min(mine.size(), m_settings.matches_per_sample);
+      std::partial_sort(mine.begin(), mine.begin() + std::ptrdiff_t(keep), mine.end(),
+                        [](const Pattern_match& a, const Pattern_match& b) {
+                          return a.signature_distance < b.signature_distance ||
+                                 (a.signature_distance == b.signature_distance && a.sample < b.sample);
+                        });
+      matches.insert(matches.end(), mine.begin(), mine.begin() + std::ptrdiff_t(keep));
+    }
+    m_times->matches += matches.size();
+    m_times->matching += seconds_since(start);
+
+    start = Clock::now();
+    const std::vector<std::vector<std::size_t>> clusters = cluster_matches(
+      matches, [&](std::size_t i, std::size_t j) { return patch_distance(i, j); },
+      [&](std::size_t a, std::size_t b) { return sample_distance(a, b); }, m_settings.consistency_cutoff, m_spacing,
+      k);
+    m_times->clusters += clusters.size();
+    m_times->clustering += seconds_since(start);
+
+    start = Clock::now();
+    std::vector<Instance> found;
+    for(const std::vector<std::size_t>& cluster : clusters) {
+      Instance instance;
+      if(make_instance(matches, cluster, in_neighbourhood, found, instance))
+        found.push_back(instance);
+    }
+    m_times->optimization += seconds_since(start);
+    return found;
+  }
+
+  std::size_t nearest_scale_step(double scale) const
+  {
+    std::size_t best = 0;
+    for(std::size_t s = 1; s < m_scales.size(); ++s)
+      if(std::abs(std::log(m_scales[s] / scale)) < std::abs(std::log(m_scales[best] / scale)))
+        best = s;
+    return best;
+  }
+
+  // A cluster's correspondence, refined by Eq. 5.4; false when it is not a new instance.
+  bool make_instance(const std::vector<Pattern_match>& matches, const std::vector<std::size_t>& cluster,
+                     const std::vector<bool>& in_neighbourhood, const std::vector<Instance>& found_now,
+                     Instance& instance) const
+  {
+    const std::size_t k = m_patch_sample.size();
+    std::vector<double> scales;
+    for(std::size_t m : cluster)
+      scales.push_back(matches[m].scale);
+    std::nth_element(scales.begin(), scales.begin() + std::ptrdiff_t(scales.size() / 2), scales.end());
+    instance.scale_step = nearest_scale_step(scales[scales.size() / 2]);
+    const double scale = m_scales[instance.scale_step];
+
+    // start from the most consistent match of each patch sample in the cluster
+    std::vector<double> support(cluster.size(), 0.0);
+    for(std::size_t a = 0; a < cluster.size(); ++a)
+      for(std::size_t b = 0; b < cluster.size(); ++b) {
+        const Pattern_match& ma = matches[cluster[a]];
+        const Pattern_match& mb = matches[cluster[b]];
+        if(ma.patch_sample != mb.patch_sample && ma.sample != mb.sample)
+          support[a] += match_consistency(patch_distance(ma.patch_sample, mb.patch_sample),
+                                          sample_distance(ma.sample, mb.sample), scale, scale, m_spacing);
+      }
+    std::vector<std::size_t> order(cluster.size());
+    std::iota(order.begin(), order.end(), std::size_t(0));
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return support[a] > support[b]; });
+    Pattern_correspondence& c = instance.correspondence;
+    c.image.assign(k, Pattern_correspondence::unmapped);
+    std::vector<std::size_t> taken;
+    for(std::size_t a : order) {
+      const Pattern_match& m = matches[cluster[a]];
+      if(c.image[m.patch_sample] == Pattern_correspondence::unmapped &&
+         std::find(taken.begin(), taken.end(), m.sample) == taken.end()) {
+        c.image[m.patch_sample] = m.sample;
+        taken.push_back(m.sample);
+      }
+    }
+
+    Pattern_energy_terms terms;
+    terms.patch_samples = k;
+    terms.landmark = m_landmark;
+    terms.alpha = m_settings.alpha;
+    terms.beta = m_settings.beta;
+    terms.gamma = m_settings.gamma;
+    terms.scale = scale;
+    terms.slack = m_spacing;
+    const std::size_t step = instance.scale_step;
+    terms.signature_cost = [this, step](std::size_t i, std::size_t q) { return signature_cost(i, step, q); };
+    terms.patch_distance = [this](std::size_t i, std::size_t j) { return patch_distance(i, j); };
+    terms.sample_distance = [this](std::size_t a, std::size_t b) { return sample_distance(a, b); };
+    const Pattern_energy energy(terms);
+    std::vector<bool> taken_now(m_sample_vertex.size(), false);
+    for(const Instance& other : found_now)
+      for(std::size_t q : other.correspondence.image)
+        if(q != Pattern_correspondence::unmapped)
+          taken_now[q] = true;
+    const auto near = [this](std::size_t q) -> const Row& { return m_near[q]; };
+    const auto usable = [&](std::size_t q) { return in_neighbourhood[q] && !m_used[q] && !taken_now[q]; };
+    const double step_length = 2 * m_spacing * scale;
+    refine_correspondence(c, energy, near, usable, step_length);
+    // then the correspondences rebuilt around the samples near the landmark's image
+    if(c.image[m_landmark] != Pattern_correspondence::unmapped) {
+      const Pattern_correspondence first = c;
+      for(const auto& [q, d] : m_near[first.image[m_landmark]]) {
+        if(d > step_length || !usable(q))
+          continue;
+        Pattern_correspondence other = correspondence_around(q, energy, near, usable);
+        refine_correspondence(other, energy, near, usable, step_length);
+        if(other.energy < c.energy)
+          c = other;
+      }
+    }
+
+    // accept a correspondence that maps the landmark and at least half of the samples, whose
+    // mapped pairs keep their distances (above the cut-off on average) and whose landmark looks
+    // like the patch's centre (within twice the match tolerance: the landmark's image is a
+    // sample, up to a spacing from where the centre maps)
+    if(c.image[m_landmark] == Pattern_correspondence::unmapped || 2 * c.mapped < k)
+      return false;
+    double consistent = 0;
+    std::size_t pairs = 0;
+    for(std::size_t i = 0; i < k; ++i)
+      for(std::size_t j = i + 1; j < k; ++j)
+        if(c.image[i] != Pattern_correspondence::unmapped && c.image[j] != Pattern_correspondence::unmapped) {
+          consistent += energy.consistency(i, c.image[i], j, c.image[j]);
+          ++pairs;
+        }
+    if(pairs == 0 || consistent / double(pairs) < m_settings.consistency_cutoff)
+      return false;
+    if(signature_cost(m_landmark, step, c.image[m_landmark]) > 2 * m_settings.match_tolerance)
+      return false;
+    instance.center_sample = c.image[m_landmark];
+    instance.center_vertex = m_sample_vertex[instance.center_sample];
+    // a new instance: its centre is farther than the mean of the two radii from every other's
+    const auto overlaps = [&](const Instance& other) {
+      const double other_scale = other.scale_step == none ? 1.0 : m_scales[other.scale_step];
+      return sample_distance(instance.center_sample, other.center_sample) < 0.5 * (scale + other_scale) * m_radius;
+    };
+    return std::none_of(m_instances.begin(), m_instances.end(), overlaps) &&
+           std::none_of(found_now.begin(), found_now.end(), overlaps);
+  }
+
+  // Each instance's centre: from the landmark's image (a sample, up to a spacing away from
+  // where the patch's centre maps), a descent over vertices to the one whose own signature is
+  // most like the patch centre's. Every step evaluates the unvisited neighbours of the current
+  // vertex of every instance still moving, in one batch of local rows.
+  void place_centres()
+  {
+    const int rings = m_settings.signature_rings;
+    const double signature_radius = m_settings.signature_radius * m_radius;
+    const std::vector<double>& target = m_patch_signature[m_landmark];
+    const std::size_t n = m_instances.size();
+    std::vector<double> cost(n, 0.0);
+    std::vector<bool> moving(n, false);
+    std::vector<std::vector<std::size_t>> visited(n);
+    for(std::size_t a = 1; a < n; ++a) {
+      moving[a] = true;
+      cost[a] = signature_cost(m_landmark, m_instances[a].scale_step, m_instances[a].center_sample);
+      visited[a].push_back(m_instances[a].center_vertex);
+    }
+    const double largest = signature_radius * m_scales.back();
+    const int max_steps = 1 + int(std::ceil(3 * m_spacing * m_scales.back() / std::max(m_mean_edge, 1e-300)));
+    for(int step = 0; step < max_steps; ++step) {
+      std::vector<std::pair<std::size_t, std::size_t>> tried; // (instance, vertex)
+      for(std::size_t a = 1; a < n; ++a) {
+        if(!moving[a])
+          continue;
+        for(vertex_descriptor w : CGAL::vertices_around_target(m_vertex[m_instances[a].center_vertex], m_tm)) {
+          const std::size_t wi = std::size_t(get(m_vim, w));
+          if(std::find(visited[a].begin(), visited[a].end(), wi) == visited[a].end()) {
+            visited[a].push_back(wi);
+            tried.emplace_back(a, wi);
+          }
+        }
+      }
+      if(tried.empty())
+        break;
+      std::vector<vertex_descriptor> sources;
+      for(const auto& t : tried)
+        sources.push_back(m_vertex[t.second]);
+      std::vector<std::size_t> best(n, none);
+      std::vector<double> best_cost = cost;
+      geodesic_sparse_distance_rows<Concurrency>(
+        m_tm, sources,
+        [&](std::size_t r, const Row& entries) {
+          const std::size_t a = tried[r].first;
+          const double radius = signature_radius * m_scales[m_instances[a].scale_step];
+          Ring_sums sums(m_rings.front().bands(), m_band_width);
+          for(const auto& [v, d] : entries)
+            if(d < radius)
+              sums.add(d, m_area[v], m_curvature[v]);
+          const double c = signature_distance(target, sums.signature(radius, rings)) / m_signature_norm;
+          if(c < best_cost[a]) {
+            best_cost[a] = c;
+            best[a] = tried[r].second;
+          }
+        },
+        solver_parameters(largest));
+      for(std::size_t a = 1; a < n; ++a) {
+        if(!moving[a])
+          continue;
+        if(best[a] == none)
+          moving[a] = false;
+        else {
+          m_instances[a].center_vertex = best[a];
+          cost[a] = best_cost[a];
+        }
+      }
+    }
+  }
+
+  std::vector<Detected_instance> collect_instances() const
+  {
+    std::vector<Detected_instance> out;
+    // members: the patch's own vertices; for an instance, the vertices whose nearest sample is
+    // one of its images
+    std::vector<std::size_t> owner(m_sample_vertex.size(), none);
+    for(std::size_t a = 1; a < m_instances.size(); ++a)
+      for(std::size_t q : m_instances[a].correspondence.image)
+        if(q != Pattern_correspondence::unmapped)
+          owner[q] = a;
+    std::vector<std::vector<std::size_t>> members(m_instances.size());
+    members[0] = m_patch_vertices;
+    for(std::size_t v = 0; v < m_vertex.size(); ++v)
+      if(m_cell[v] < owner.size() && owner[m_cell[v]] != none)
+        members[owner[m_cell[v]]].push_back(v);
+    for(std::size_t a = 0; a < m_instances.size(); ++a) {
+      const Instance& instance = m_instances[a];
+      Detected_instance d;
+      d.center = instance.center_vertex;
+      d.scale = instance.scale_step == none ? 1.0 : m_scales[instance.scale_step];
+      d.energy = instance.correspondence.energy;
+      d.vertices = std::move(members[a]);
+      for(std::size_t i = 0; i < m_patch_sample.size(); ++i)
+        if(instance.correspondence.image[i] != Pattern_correspondence::unmapped)
+          d.correspondence.emplace_back(m_sample_vertex[m_patch_sample[i]],
+                                        m_sample_vertex[instance.correspondence.image[i]]);
+      out.push_back(std::move(d));
+    }
+    return out;
+  }
+
+  void arrange(Detection_result& result) const
+  {
+    if(result.instances.size() < 2)
+      return;
+    std::vector<vertex_descriptor> centres;
+    for(const Detected_instance& d : result.instances)
+      centres.push_back(m_vertex[d.center]);
+    const auto diagram = geodesic_voronoi_diagram<Concurrency>(
+      m_tm, centres, CGAL_ext::parameters::vertex_point_map(m_vpm).vertex_index_map(m_vim).number_of_threads(
+                       m_settings.threads));
+    result.arrangement_edges = diagram.dual_edges;
+    result.arrangement_triangles = diagram.dual_triangles;
+  }
+
+  const TriangleMesh& m_tm;
+  VertexPointMap m_vpm;
+  VertexIndexMap m_vim;
+  Pattern_settings m_settings;
+  Pattern_step_times* m_times = nullptr;
+  std::vector<vertex_descriptor> m_vertex;
+
+  std::vector<bool> m_in_patch;
+  std::vector<std::size_t> m_patch_vertices;
+  std::size_t m_center = 0;
+  double m_radius = 0;
+  double m_spacing = 0;
+  double m_pair_radius = 0;
+
+  std::vector<std::size_t> m_sample_vertex;    // by sample
+  std::vector<std::size_t> m_sample_of_vertex; // by vertex: its sample, or none
+  std::vector<std::size_t> m_cell;             // by vertex: its nearest sample
+  std::vector<std::size_t> m_patch_sample;     // the samples in the patch
+  std::size_t m_landmark = 0;                  // the centre's index among them
+
+  std::vector<double> m_scales;
+  std::vector<Principal_curvatures> m_curvature; // by vertex
+  std::vector<double> m_area;                    // by vertex
+  double m_band_width = 1;                       // of the ring sums
+  double m_mean_edge = 0;
+  std::vector<Ring_sums> m_rings;                             // by sample
+  std::vector<Row> m_near;                                    // by sample: the samples within m_pair_radius
+  std::vector<std::vector<std::vector<double>>> m_signature;  // by scale step, then sample
+  std::vector<std::vector<double>> m_patch_signature;         // by patch sample, at scale 1
+  double m_signature_norm = 1;
+
+  std::vector<bool> m_used; // samples that are images of an accepted instance (or of the patch)
+  std::vector<Instance> m_instances;
+};
+
+} // namespace internal
+} // namespace Geodesics_3
+} // namespace CGAL_ext
+
+#endif // CGAL_EXT_GEODESICS_3_INTERNAL_PATTERN_DETECTION_H

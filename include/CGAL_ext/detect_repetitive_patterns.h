@@ -1,0 +1,266 @@
+// Copyright (c) 2026 The CGAL_ext geodesics developers.
+#ifndef CGAL_EXT_DETECT_REPETITIVE_PATTERNS_H
+#define CGAL_EXT_DETECT_REPETITIVE_PATTERNS_H
+
+/// \file detect_repetitive_patterns.h
+/// Repetitive pattern detection from one marked instance (thesis chapter 5).
+
+#include <CGAL_ext/Geodesics_3/Geodesic_error.h>
+#include <CGAL_ext/Geodesics_3/Named_function_parameters.h>
+#include <CGAL_ext/Geodesics_3/internal/Pattern_detection.h>
+
+#include <CGAL/boost/graph/properties.h>
+#include <CGAL/tags.h>
+
+#include <array>
+#include <cstddef>
+#include <utility>
+#include <vector>
+
+namespace CGAL_ext {
+
+/// \ingroup PkgGeodesics3Ref
+/// The instance of a pattern that the user marks: a geodesic disk (a centre and a radius), or
+/// any connected set of vertices (an elongated or irregular patch).
+template <class TriangleMesh>
+struct Pattern_patch
+{
+  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
+  vertex_descriptor center{};                 ///< the centre of a disk
+  double radius = 0;                          ///< the radius of a disk; 0 for a vertex list
+  std::vector<vertex_descriptor> vertices;    ///< the vertices of a vertex list
+
+  /// the vertices within geodesic distance `radius` of `center`
+  static Pattern_patch disk(vertex_descriptor center, double radius)
+  {
+    Pattern_patch p;
+    p.center = center;
+    p.radius = radius;
+    return p;
+  }
+  /// the vertices of `range`, which must be connected through the mesh's edges; the centre is
+  /// the vertex farthest from the patch's border
+  template <class VertexRange>
+  static Pattern_patch of_vertices(const VertexRange& range)
+  {
+    Pattern_patch p;
+    p.vertices.assign(range.begin(), range.end());
+    return p;
+  }
+};
+
+/// \ingroup PkgGeodesics3Ref
+/// One instance of the pattern, as `detect_repetitive_patterns()` finds it.
+template <class TriangleMesh, class Point_3>
+struct Pattern_instance
+{
+  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
+  vertex_descriptor center_vertex{}; ///< the vertex at the instance's centre (the image of the patch's centre)
+  Point_3 center;                    ///< its position
+  double scale = 1;                  ///< the instance's size over the patch's
+  double energy = 0;                 ///< the energy of its correspondence (Eq. 5.4, lower is better; 0 for the patch)
+  std::vector<vertex_descriptor> vertices; ///< its vertices
+  /// the sample correspondence: (a sample of the patch, its image in this instance)
+  std::vector<std::pair<vertex_descriptor, vertex_descriptor>> correspondence;
+};
+
+/// \ingroup PkgGeodesics3Ref
+/// The time of each step of `detect_repetitive_patterns()` and what it counted.
+struct Pattern_statistics
+{
+  double sampling_seconds = 0, signature_seconds = 0, matching_seconds = 0, clustering_seconds = 0,
+         optimization_seconds = 0, arrangement_seconds = 0;
+  std::size_t samples = 0;       ///< farthest-point samples of the mesh
+  std::size_t patch_samples = 0; ///< of them in the patch
+  std::size_t matches = 0;       ///< candidate matches, summed over the searches
+  std::size_t clusters = 0;      ///< candidate instances, summed over the searches
+  std::size_t searches = 0;      ///< rounds of region growing
+  double patch_radius = 0;       ///< the largest distance from the patch's centre to its vertices
+};
+
+/// \ingroup PkgGeodesics3Ref
+/// The instances of a pattern and their arrangement.
+template <class TriangleMesh, class Point_3>
+struct Repetitive_patterns
+{
+  std::vector<Pattern_instance<TriangleMesh, Point_3>> instances; ///< the marked patch first
+  /// the arrangement: pairs of instances whose cells of the geodesic Voronoi diagram of the
+  /// centres share a bisector (its dual graph), `first < second`
+  std::vector<std::pair<std::size_t, std::size_t>> arrangement_edges;
+  /// triples of instances whose cells meet at a Voronoi vertex
+  std::vector<std::array<std::size_t, 3>> arrangement_triangles;
+  Pattern_statistics statistics;
+};
+
+/// \ingroup PkgGeodesics3Ref
+/// finds the instances of the pattern that `patch` marks on `tm`, with a correspondence from the
+/// patch's samples to each, and their arrangement (thesis chapter 5).
+///
+/// The pipeline: exact farthest-point samples of the mesh (the patch's centre first); the
+/// signature of every sample (how the principal curvatures spread over the geodesic disk around
+/// it, ring by ring); candidate matches from the patch's samples to the samples around it whose
+/// signatures are alike; the matches grouped into candidate instances by the spectral embedding
+/// of their geodesic consistency (Eq. 5.1-5.2) and a weighted mean shift (Eq. 5.3); each
+/// candidate's correspondence refined by the energy of Eq. 5.4; region growing (Algorithm 7):
+/// every new instance searches around itself for more, until none appears; each instance's
+/// centre placed where the distances to its samples agree with the patch's; the arrangement as
+/// the dual of the geodesic Voronoi diagram of the centres. Instances need not be regular,
+/// equally spaced, isotropic or, with `scale_range`, of the patch's size.
+///
+/// Lengths of the named parameters are relative to the patch radius (the largest geodesic
+/// distance from the patch's centre to its vertices).
+///
+/// \tparam ConcurrencyTag `CGAL::Sequential_tag` (the default), `CGAL::Parallel_tag` or
+///         `CGAL::Parallel_if_available_tag`: the propagations and curvatures on TBB threads
+///         (the same instances for every number of threads)
+/// \tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`
+///
+/// \param tm the triangle mesh
+/// \param patch the marked instance
+/// \param np optional named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{sample_spacing}
+///     \cgalParamDescription{the covering radius of the farthest-point sampling}
+///     \cgalParamType{`double`, positive} \cgalParamDefault{`1/3`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{signature_radius}
+///     \cgalParamDescription{the radius of the geodesic disk of a signature}
+///     \cgalParamType{`double`, positive} \cgalParamDefault{`1`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{signature_rings}
+///     \cgalParamDescription{N: the rings (bands of distance) of a signature}
+///     \cgalParamType{`int`, at least 1} \cgalParamDefault{`6`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{match_tolerance}
+///     \cgalParamDescription{epsilon of Eq. 5.5: two samples match when their signatures differ by less than this
+///                           times the mean signature norm of the patch's samples}
+///     \cgalParamType{`double`, positive} \cgalParamDefault{`0.35`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{matches_per_sample}
+///     \cgalParamDescription{candidate matches kept per patch sample and search, the most alike first}
+///     \cgalParamType{`std::size_t`, positive} \cgalParamDefault{`24`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{consistency_cutoff}
+///     \cgalParamDescription{c0 of Eq. 5.1; an instance's matched pairs must keep their distances to this ratio on average}
+///     \cgalParamType{`double` in [0, 1)} \cgalParamDefault{`0.7`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{energy_weights}
+///     \cgalParamDescription{alpha, beta and gamma of Eq. 5.4 (signature, consistency and landmark terms, each an
+///                           average over the patch's samples)}
+///     \cgalParamType{`std::array<double, 3>`, non-negative} \cgalParamDefault{`{1, 1, 1}`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{search_radius}
+///     \cgalParamDescription{how far from an instance's centre (in patch radii, plus one) region growing looks for
+///                           its neighbours}
+///     \cgalParamType{`double`, positive} \cgalParamDefault{`3`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{scale_range}
+///     \cgalParamDescription{the sizes of instances sought, relative to the patch (adaptive patterns, Eq. 5.5-5.6);
+///                           the scales are searched about 10 % apart}
+///     \cgalParamType{`std::pair<double, double>`, positive, first <= second} \cgalParamDefault{`{1, 1}`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{number_of_threads}
+///     \cgalParamDescription{with `CGAL::Parallel_tag`: the threads, `0` for TBB's choice}
+///     \cgalParamType{`int`, non-negative} \cgalParamDefault{`0`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_point_map, vertex_index_map}
+///     \cgalParamDescription{as in `geodesic_distances()`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// \return the instances, the marked patch first, and the arrangement
+///
+/// \throws Geodesic_error when the patch's centre or a vertex is out of range, its radius is not
+///         positive or covers the whole component, its vertices are not connected, it holds
+///         fewer than 3 samples or is flat, when a named parameter is out of its range, and for
+///         what `geodesic_distances()` refuses in the mesh. A mesh with no other instance gives
+///         just the patch.
+template <class ConcurrencyTag = CGAL::Sequential_tag, class TriangleMesh,
+          class NamedParameters = parameters::Default_named_parameters_type>
+Repetitive_patterns<TriangleMesh, typename boost::property_traits<
+                                    Geodesics_3::internal::Vertex_point_map_of<TriangleMesh, NamedParameters>>::value_type>
+detect_repetitive_patterns(const TriangleMesh& tm, const Pattern_patch<TriangleMesh>& patch,
+                           const NamedParameters& np = parameters::default_values())
+{
+  namespace internal = Geodesics_3::internal;
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  typedef internal::Vertex_point_map_of<TriangleMesh, NamedParameters> Vertex_point_map;
+  typedef typename boost::property_traits<Vertex_point_map>::value_type Point_3;
+  constexpr bool parallel = internal::is_parallel_tag<ConcurrencyTag>();
+
+  const Vertex_point_map vpm =
+    choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm));
+  const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
+
+  internal::Pattern_settings s;
+  s.sample_spacing = choose_parameter(get_parameter(np, internal_np::sample_spacing), s.sample_spacing);
+  s.signature_radius = choose_parameter(get_parameter(np, internal_np::signature_radius), s.signature_radius);
+  s.signature_rings = choose_parameter(get_parameter(np, internal_np::signature_rings), s.signature_rings);
+  s.match_tolerance = choose_parameter(get_parameter(np, internal_np::match_tolerance), s.match_tolerance);
+  s.matches_per_sample = choose_parameter(get_parameter(np, internal_np::matches_per_sample), s.matches_per_sample);
+  s.consistency_cutoff = choose_parameter(get_parameter(np, internal_np::consistency_cutoff), s.consistency_cutoff);
+  const std::array<double, 3> weights =
+    choose_parameter(get_parameter(np, internal_np::energy_weights), std::array<double, 3>{s.alpha, s.beta, s.gamma});
+  s.alpha = weights[0];
+  s.beta = weights[1];
+  s.gamma = weights[2];
+  s.search_radius = choose_parameter(get_parameter(np, internal_np::search_radius), s.search_radius);
+  const std::pair<double, double> scales =
+    choose_parameter(get_parameter(np, internal_np::scale_range), std::pair<double, double>(1.0, 1.0));
+  s.scale_min = scales.first;
+  s.scale_max = scales.second;
+  s.threads = choose_parameter(get_parameter(np, internal_np::number_of_threads), 0);
+
+  internal::Pattern_patch_indices indices;
+  if(patch.radius != 0) {
+    indices.center = std::size_t(get(vim, patch.center));
+    indices.radius = patch.radius;
+  } else {
+    if(patch.vertices.empty())
+      throw Geodesic_error("pattern detection: the patch has no vertex and no radius");
+    for(auto v : patch.vertices)
+      indices.vertices.push_back(std::size_t(get(vim, v)));
+  }
+  internal::Pattern_detector<parallel, TriangleMesh, Vertex_point_map, decltype(vim)> detector(tm, vpm, vim, s);
+  const internal::Detection_result found = detector.run(indices);
+
+  std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> vertex_of_index(num_vertices(tm));
+  for(auto v : vertices(tm))
+    vertex_of_index[std::size_t(get(vim, v))] = v;
+  Repetitive_patterns<TriangleMesh, Point_3> result;
+  for(const internal::Detected_instance& d : found.instances) {
+    Pattern_instance<TriangleMesh, Point_3> instance;
+    instance.center_vertex = vertex_of_index[d.center];
+    instance.center = get(vpm, instance.center_vertex);
+    instance.scale = d.scale;
+    instance.energy = d.energy;
+    for(std::size_t v : d.vertices)
+      instance.vertices.push_back(vertex_of_index[v]);
+    for(const auto& [p, q] : d.correspondence)
+      instance.correspondence.emplace_back(vertex_of_index[p], vertex_of_index[q]);
+    result.instances.push_back(std::move(instance));
+  }
+  result.arrangement_edges = found.arrangement_edges;
+  result.arrangement_triangles = found.arrangement_triangles;
+  const internal::Pattern_step_times& t = found.times;
+  Pattern_statistics& st = result.statistics;
+  st.sampling_seconds = t.sampling;
+  st.signature_seconds = t.signatures;
+  st.matching_seconds = t.matching;
+  st.clustering_seconds = t.clustering;
+  st.optimization_seconds = t.optimization;
+  st.arrangement_seconds = t.arrangement;
+  st.samples = t.samples;
+  st.patch_samples = t.patch_samples;
+  st.matches = t.matches;
+  st.clusters = t.clusters;
+  st.searches = t.rounds;
+  st.patch_radius = t.patch_radius;
+  return result;
+}
+
+} // namespace CGAL_ext
+
+#endif // CGAL_EXT_DETECT_REPETITIVE_PATTERNS_H
