@@ -34,18 +34,18 @@ inline double bump_profile(const Planted& p, double x, double y)
   return r2 < 1 ? (1 - r2) * (1 - r2) : 0.0;
 }
 
-/// Up to `count` instance centres in [lo, hi]^2 thrown at random, at least `spacing` apart
-/// (an irregular layout, not a grid).
-inline std::vector<Planted> irregular_layout(int count, double lo, double hi, double spacing, double radius,
-                                             unsigned seed)
+/// Up to `count` instance centres in [x_lo, x_hi] x [y_lo, y_hi] thrown at random, at least
+/// `spacing` apart (an irregular layout, not a grid).
+inline std::vector<Planted> irregular_layout(int count, double x_lo, double x_hi, double y_lo, double y_hi,
+                                             double spacing, double radius, unsigned seed)
 {
   std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> u(lo, hi);
+  std::uniform_real_distribution<double> ux(x_lo, x_hi), uy(y_lo, y_hi);
   std::vector<Planted> out;
   for(int attempt = 0; attempt < 20000 && int(out.size()) < count; ++attempt) {
     Planted p;
-    p.x = u(rng);
-    p.y = u(rng);
+    p.x = ux(rng);
+    p.y = uy(rng);
     p.radius = radius;
     bool free = true;
     for(const Planted& q : out)

@@ -38,8 +38,9 @@ namespace CGAL_ext {
 namespace Geodesics_3 {
 namespace internal {
 
-/// The constants of the pipeline; lengths are relative to the patch radius (the largest
-/// geodesic distance from the patch's centre to its vertices).
+/// The constants of the pipeline. Lengths are relative to the patch's size (the radius of a disk
+/// of its area: its radius when it is a geodesic disk), the search radius to the patch radius
+/// (the largest geodesic distance from its centre to its vertices).
 struct Pattern_settings
 {
   double sample_spacing = 1.0 / 3;   ///< covering radius of the sampling
@@ -230,6 +231,16 @@ private:
       if(m_in_patch[v])
         m_patch_vertices.push_back(v);
     m_times->patch_radius = m_radius;
+    // the size of the patch: the radius of a disk of its area (its radius when it is a disk,
+    // less when it is elongated, whose samples and signatures follow its width)
+    const std::vector<double> area = vertex_areas(m_tm, m_vpm, m_vim);
+    double patch_area = 0;
+    for(std::size_t v = 0; v < n; ++v)
+      if(m_in_patch[v])
+        patch_area += area[v];
+    m_size = std::min(m_radius, std::sqrt(patch_area / CGAL_PI));
+    if(!(m_size > 0))
+      throw Geodesic_error("pattern detection: the patch has no area");
     double total = 0;
     std::size_t count = 0;
     for(auto e : edges(m_tm)) {
@@ -302,7 +313,7 @@ private:
   // Exact farthest-point samples, the patch's centre first, covering the mesh within the spacing.
   void sample()
   {
-    m_spacing = m_settings.sample_spacing * m_radius;
+    m_spacing = m_settings.sample_spacing * m_size;
     std::vector<vertex_descriptor> samples;
     m_cell.assign(m_vertex.size(), 0);
     farthest_point_sampling<Concurrency>(
@@ -347,7 +358,7 @@ private:
     m_area = vertex_areas(m_tm, m_vpm, m_vim);
     const std::vector<Principal_curvatures>& curvature = m_curvature;
     const std::vector<double>& area = m_area;
-    const double signature_radius = m_settings.signature_radius * m_radius;
+    const double signature_radius = m_settings.signature_radius * m_size;
     const double largest = signature_radius * std::max(1.0, m_scales.back());
     const double smallest = signature_radius * std::min(1.0, m_scales.front());
     const double band = smallest / (4.0 * m_settings.signature_rings);
@@ -515,7 +526,7 @@ private:
       return false;
     for(const Instance& instance : m_instances) {
       const double scale = instance.scale_step == none ? 1.0 : m_scales[instance.scale_step];
-      if(sample_distance(q, instance.center_sample) <= scale * m_radius * 1.5)
+      if(sample_distance(q, instance.center_sample) <= scale * m_size * 1.5)
         return false;
     }
     return true;
@@ -685,7 +696,7 @@ private:
     // a new instance: its centre is farther than the mean of the two radii from every other's
     const auto overlaps = [&](const Instance& other) {
       const double other_scale = other.scale_step == none ? 1.0 : m_scales[other.scale_step];
-      return sample_distance(instance.center_sample, other.center_sample) < 0.5 * (scale + other_scale) * m_radius;
+      return sample_distance(instance.center_sample, other.center_sample) < 0.5 * (scale + other_scale) * m_size;
     };
     return std::none_of(m_instances.begin(), m_instances.end(), overlaps) &&
            std::none_of(found_now.begin(), found_now.end(), overlaps);
@@ -698,7 +709,7 @@ private:
   void place_centres()
   {
     const int rings = m_settings.signature_rings;
-    const double signature_radius = m_settings.signature_radius * m_radius;
+    const double signature_radius = m_settings.signature_radius * m_size;
     const std::vector<double>& target = m_patch_signature[m_landmark];
     const std::size_t n = m_instances.size();
     std::vector<double> cost(n, 0.0);
@@ -815,7 +826,8 @@ private:
   std::vector<bool> m_in_patch;
   std::vector<std::size_t> m_patch_vertices;
   std::size_t m_center = 0;
-  double m_radius = 0;
+  double m_radius = 0; // the largest distance from the centre to a patch vertex
+  double m_size = 0;   // the radius of a disk of the patch's area
   double m_spacing = 0;
   double m_pair_radius = 0;
 
