@@ -11,6 +11,8 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <set>
+#include <string>
 #include <vector>
 
 using namespace test_support;
@@ -208,4 +210,170 @@ TEST(Pattern_detection, Bumps_of_three_sizes_with_a_scale_range)
         nearest = i;
     EXPECT_NEAR(instance.scale, truth.radii[nearest] / radius, 0.2 * truth.radii[nearest] / radius);
   }
+}
+
+// ---------------------------------------------------------------------------------------------
+// The steps on their own
+
+TEST(Pattern_steps, Mean_shift_finds_known_clusters)
+{
+  std::mt19937 rng(1);
+  std::normal_distribution<double> noise(0, 0.05);
+  const std::array<std::array<double, 3>, 3> centres = {{{0, 0, 0}, {3, 0, 0}, {0, 3, 1}}};
+  std::vector<std::array<double, 3>> points;
+  std::vector<std::size_t> group;
+  for(std::size_t c = 0; c < centres.size(); ++c)
+    for(int i = 0; i < 10; ++i) {
+      points.push_back({centres[c][0] + noise(rng), centres[c][1] + noise(rng), centres[c][2] + noise(rng)});
+      group.push_back(c);
+    }
+  const auto clusters = internal::weighted_mean_shift(points, std::vector<double>(points.size(), 1.0), 10);
+  ASSERT_EQ(clusters.size(), 3u);
+  for(const auto& cluster : clusters) {
+    ASSERT_EQ(cluster.size(), 10u);
+    for(std::size_t i : cluster)
+      EXPECT_EQ(group[i], group[cluster.front()]);
+  }
+}
+
+TEST(Pattern_steps, Embedding_separates_two_planted_consistent_groups)
+{
+  // a patch of 8 samples in the plane; two copies of it moved (and one turned) far apart, plus
+  // matches to random samples: the clusters are the two copies
+  std::mt19937 rng(2);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<Point_2> patch, mesh;
+  for(int i = 0; i < 8; ++i)
+    patch.push_back(Point_2(u(rng), u(rng)));
+  const auto place = [&](double dx, double dy, double turn) {
+    for(const Point_2& p : patch)
+      mesh.push_back(Point_2(dx + std::cos(turn) * p.x() - std::sin(turn) * p.y(),
+                             dy + std::sin(turn) * p.x() + std::cos(turn) * p.y()));
+  };
+  place(5, 0, 0);
+  place(0, 5, 1.0);
+  for(int i = 0; i < 16; ++i)
+    mesh.push_back(Point_2(10 * u(rng), 10 * u(rng)));
+  std::vector<internal::Pattern_match> matches;
+  for(std::size_t i = 0; i < 8; ++i) {
+    matches.push_back({i, i, 1.0, 0.0});
+    matches.push_back({i, 8 + i, 1.0, 0.0});
+    matches.push_back({i, 16 + 2 * i, 1.0, 0.0});
+  }
+  const auto distance = [](const std::vector<Point_2>& points) {
+    return [&points](std::size_t a, std::size_t b) { return std::sqrt(CGAL::squared_distance(points[a], points[b])); };
+  };
+  const auto clusters = internal::cluster_matches(matches, distance(patch), distance(mesh), 0.7, 0.0, 8);
+  std::size_t pure = 0;
+  for(const auto& cluster : clusters) {
+    std::set<std::size_t> copies;
+    for(std::size_t m : cluster)
+      copies.insert(matches[m].sample < 8 ? 0 : matches[m].sample < 16 ? 1 : 2);
+    if(copies.size() == 1 && *copies.begin() < 2 && cluster.size() == 8)
+      ++pure;
+  }
+  EXPECT_EQ(pure, 2u) << clusters.size() << " clusters";
+}
+
+TEST(Pattern_steps, Signatures_are_equal_on_congruent_patches)
+{
+  // two bumps at grid points whose neighbourhoods the grid repeats exactly (a translation by an
+  // even number of cells keeps the diagonals)
+  const double h = 1.0 / 80;
+  Planted a, b;
+  a.x = 20 * h, a.y = 20 * h, b.x = 56 * h, b.y = 50 * h;
+  a.radius = b.radius = 0.1;
+  const Mesh m = bumpy_plane(81, h, {a, b}, 0.4);
+  const auto vpm = get(CGAL::vertex_point, m);
+  const auto vim = get(CGAL::vertex_index, m);
+  const auto curvature = internal::vertex_principal_curvatures(m, vpm, vim, false);
+  const auto area = internal::vertex_areas(m, vpm, vim);
+  const std::vector<Vertex> centres = {nearest_vertex(m, Point(a.x, a.y, 0.04)), nearest_vertex(m, Point(b.x, b.y, 0.04))};
+  std::vector<std::vector<double>> signatures;
+  CGAL_ext::geodesic_sparse_distance_rows(
+    m, centres,
+    [&](std::size_t, const std::vector<std::pair<std::size_t, double>>& row) {
+      internal::Ring_sums sums(48, 0.1 / 48);
+      for(const auto& [v, d] : row)
+        sums.add(d, area[v], curvature[v]);
+      signatures.push_back(sums.signature(0.1, 6));
+    },
+    CGAL_ext::parameters::max_distance(0.1));
+  ASSERT_EQ(signatures.size(), 2u);
+  EXPECT_GT(internal::signature_distance(signatures[0], std::vector<double>(24, 0.0)), 0.1);
+  EXPECT_LT(internal::signature_distance(signatures[0], signatures[1]), 1e-9);
+  // a smaller disk is a prefix of the same sums: its signature differs from the larger one's
+  internal::Ring_sums sums(48, 0.1 / 48);
+  EXPECT_EQ(sums.signature(0.05, 6).size(), 24u);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Bad input
+
+namespace {
+Mesh one_bump_plane()
+{
+  Planted b;
+  b.x = b.y = 0.5;
+  b.radius = 0.1;
+  return bumpy_plane(61, 1.0 / 60, {b}, 0.4);
+}
+} // namespace
+
+TEST(Pattern_bad_input, Refused_with_a_message_naming_what)
+{
+  const Mesh m = one_bump_plane();
+  const Vertex centre = nearest_vertex(m, Point(0.5, 0.5, 0.04));
+  typedef CGAL_ext::Pattern_patch<Mesh> Patch;
+  const auto refuses = [&](const Patch& patch, const std::string& needle, auto np) {
+    try {
+      CGAL_ext::detect_repetitive_patterns(m, patch, np);
+      ADD_FAILURE() << "no error, expected one about " << needle;
+    } catch(const CGAL_ext::Geodesic_error& e) {
+      EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
+    }
+  };
+  const auto none = CGAL_ext::parameters::default_values();
+  refuses(Patch::disk(centre, 0), "radius must be positive", none);
+  refuses(Patch::disk(centre, -1), "radius must be positive", none);
+  refuses(Patch::disk(centre, 10), "larger than the mesh", none);
+  refuses(Patch::disk(Vertex(100000), 0.1), "not a vertex", none);
+  refuses(Patch::disk(centre, 0.004), "too few to match", none);
+  refuses(Patch::disk(nearest_vertex(m, Point(0.1, 0.1, 0)), 0.05), "flat", none);
+  refuses(Patch::of_vertices(std::vector<Vertex>{Vertex(0), Vertex(3000)}), "not connected", none);
+  refuses(Patch::of_vertices(std::vector<Vertex>{Vertex(0), Vertex(100000)}), "out of range", none);
+  refuses(Patch::of_vertices(std::vector<Vertex>{}), "no vertex", none);
+  refuses(Patch::disk(centre, 0.1), "empty scale range", CGAL_ext::parameters::scale_range(std::make_pair(2.0, 1.0)));
+  refuses(Patch::disk(centre, 0.1), "consistency_cutoff", CGAL_ext::parameters::consistency_cutoff(1.0));
+  refuses(Patch::disk(centre, 0.1), "sample_spacing", CGAL_ext::parameters::sample_spacing(0.0));
+}
+
+TEST(Pattern_bad_input, A_mesh_with_no_other_instance_gives_just_the_patch)
+{
+  const Mesh m = one_bump_plane();
+  const auto found = CGAL_ext::detect_repetitive_patterns(
+    m, CGAL_ext::Pattern_patch<Mesh>::disk(nearest_vertex(m, Point(0.5, 0.5, 0.04)), 0.1));
+  ASSERT_EQ(found.instances.size(), 1u);
+  EXPECT_EQ(found.instances[0].scale, 1.0);
+  EXPECT_TRUE(found.arrangement_edges.empty());
+  EXPECT_GT(found.instances[0].vertices.size(), 50u);
+}
+
+TEST(Pattern_detection, Same_instances_for_1_2_and_4_threads)
+{
+  const double radius = 0.06;
+  const std::vector<Planted> bumps = irregular_layout(10, 0.1, 0.9, 0.1, 0.9, 2.6 * radius, radius, 6);
+  const Mesh m = bumpy_plane(81, 1.0 / 80, bumps, 0.4);
+  const auto patch = CGAL_ext::Pattern_patch<Mesh>::disk(nearest_vertex(m, Point(bumps[0].x, bumps[0].y, 0.024)), radius);
+  std::vector<std::vector<Vertex>> centres;
+  for(int threads : {1, 2, 4}) {
+    const auto found = CGAL_ext::detect_repetitive_patterns<CGAL::Parallel_if_available_tag>(
+      m, patch, CGAL_ext::parameters::number_of_threads(threads));
+    centres.emplace_back();
+    for(const auto& instance : found.instances)
+      centres.back().push_back(instance.center_vertex);
+  }
+  EXPECT_GE(centres[0].size(), 9u);
+  EXPECT_EQ(centres[0], centres[1]);
+  EXPECT_EQ(centres[0], centres[2]);
 }

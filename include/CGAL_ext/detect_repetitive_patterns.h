@@ -26,14 +26,16 @@ template <class TriangleMesh>
 struct Pattern_patch
 {
   typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
+  bool is_disk = false;                       ///< a disk, or else a vertex list
   vertex_descriptor center{};                 ///< the centre of a disk
-  double radius = 0;                          ///< the radius of a disk; 0 for a vertex list
+  double radius = 0;                          ///< the radius of a disk
   std::vector<vertex_descriptor> vertices;    ///< the vertices of a vertex list
 
   /// the vertices within geodesic distance `radius` of `center`
   static Pattern_patch disk(vertex_descriptor center, double radius)
   {
     Pattern_patch p;
+    p.is_disk = true;
     p.center = center;
     p.radius = radius;
     return p;
@@ -214,7 +216,8 @@ detect_repetitive_patterns(const TriangleMesh& tm, const Pattern_patch<TriangleM
   s.threads = choose_parameter(get_parameter(np, internal_np::number_of_threads), 0);
 
   internal::Pattern_patch_indices indices;
-  if(patch.radius != 0) {
+  indices.is_disk = patch.is_disk;
+  if(patch.is_disk) {
     indices.center = std::size_t(get(vim, patch.center));
     indices.radius = patch.radius;
   } else {

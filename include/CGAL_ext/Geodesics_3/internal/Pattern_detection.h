@@ -58,9 +58,10 @@ struct Pattern_settings
 /// The marked patch, by vertex index: its vertices and the centre, or a centre and a radius.
 struct Pattern_patch_indices
 {
-  std::size_t center = std::size_t(-1); ///< set with `radius`, or left for a vertex list
+  bool is_disk = false;
+  std::size_t center = std::size_t(-1); ///< with `radius`, for a disk
   double radius = 0;
-  std::vector<std::size_t> vertices;    ///< a vertex list (when `radius` is 0)
+  std::vector<std::size_t> vertices;    ///< a vertex list (when not a disk)
 };
 
 struct Pattern_step_times
@@ -195,7 +196,17 @@ private:
   {
     const std::size_t n = m_vertex.size();
     m_in_patch.assign(n, false);
-    if(patch.radius != 0 || patch.vertices.empty()) {
+    double total = 0, longest = 0;
+    std::size_t count = 0;
+    for(auto e : edges(m_tm)) {
+      const double length = std::sqrt(double(CGAL::squared_distance(get(m_vpm, source(halfedge(e, m_tm), m_tm)),
+                                                                     get(m_vpm, target(halfedge(e, m_tm), m_tm)))));
+      total += length;
+      longest = std::max(longest, length);
+      ++count;
+    }
+    m_mean_edge = count ? total / double(count) : 0.0;
+    if(patch.is_disk) {
       if(patch.center >= n)
         throw Geodesic_error("pattern detection: the patch centre " + std::to_string(patch.center) +
                              " is not a vertex (the mesh has " + std::to_string(n) + ")");
@@ -210,9 +221,11 @@ private:
           m_in_patch[v] = true;
           farthest = std::max(farthest, d);
         }
-      // the disk covers its whole component when a longer row reaches nothing more
-      const Row beyond = local_row(m_center, patch.radius * 1.5);
-      if(beyond.size() == row.size() && beyond.size() > 0 && farthest < patch.radius)
+      // the disk covers its whole component when a row longer by the longest edge reaches no
+      // more vertices (a component that reaches beyond the radius has a vertex within an edge
+      // beyond it)
+      const Row beyond = local_row(m_center, patch.radius + 1.01 * longest);
+      if(beyond.size() == row.size())
         throw Geodesic_error("pattern detection: the patch radius " + std::to_string(patch.radius) +
                              " is larger than the mesh around the centre (every vertex there is within " +
                              std::to_string(farthest) + ")");
@@ -241,14 +254,6 @@ private:
     m_size = std::min(m_radius, std::sqrt(patch_area / CGAL_PI));
     if(!(m_size > 0))
       throw Geodesic_error("pattern detection: the patch has no area");
-    double total = 0;
-    std::size_t count = 0;
-    for(auto e : edges(m_tm)) {
-      total += std::sqrt(double(CGAL::squared_distance(get(m_vpm, source(halfedge(e, m_tm), m_tm)),
-                                                       get(m_vpm, target(halfedge(e, m_tm), m_tm)))));
-      ++count;
-    }
-    m_mean_edge = count ? total / double(count) : 0.0;
   }
 
   // A vertex list: connected, with a border; its centre is the vertex farthest from its border
