@@ -12,6 +12,9 @@
 //                   [--threads N] [--output FILE.txt] [--labels FILE.txt|FILE.ply] [--stats]
 //   geodesic voronoi MESH --source S[,S...] [--algorithm fwp-mmp|mmp|pmmp] [--threads N]
 //                    --output CELLS.txt|CELLS.ply [--bisectors FILE.obj|FILE.txt] [--dual FILE.obj] [--stats]
+//   geodesic patterns MESH (--patch-center V --patch-radius R | --patch-vertices FILE) [--scales A:B]
+//                     [--threads N] --output FILE.json [--labels FILE.ply|FILE.txt] [--arrangement FILE.obj]
+//                     [--stats]
 //
 // MESH is an OFF, OBJ, PLY or STL file: triangles, quads, polygons, soups and non-manifold meshes
 // are made into the triangle mesh the library takes (CGAL_ext::polygon_soup_to_geodesic_mesh),
@@ -30,6 +33,7 @@
 #include "tool_mesh.h"
 #include "tool_options.h"
 #include "tool_output.h"
+#include "tool_patterns.h"
 #include "tool_sample.h"
 #include "tool_solvers.h"
 #include "tool_stats.h"
@@ -181,6 +185,8 @@ int main(int argc, char** argv)
   add_sample_command(app, sample);
   Voronoi_options voronoi;
   add_voronoi_command(app, voronoi);
+  Patterns_options patterns;
+  add_patterns_command(app, patterns);
 
   try {
     app.parse(argc, argv);
@@ -208,6 +214,8 @@ int main(int argc, char** argv)
       return run_sample(sample);
     if(app.got_subcommand("voronoi"))
       return run_voronoi(voronoi);
+    if(app.got_subcommand("patterns"))
+      return run_patterns(patterns);
   } catch(const std::exception& e) { // Tool_error, and the library's Geodesic_error
     std::cerr << "error: " << e.what() << std::endl;
   }

@@ -193,6 +193,15 @@ bool write_labels_ply(std::ostream& os, const Soup& soup, const std::vector<doub
                         });
 }
 
+bool write_instances_ply(std::ostream& os, const Soup& soup, const std::vector<long>& instances)
+{
+  return write_soup_ply(os, soup, "repetitive pattern instances from the geodesic tool (-1: none)",
+                        "property int instance\n", [&](std::size_t i, const auto& binary) {
+                          binary(static_cast<std::int32_t>(instances[i]));
+                          return label_color(instances[i]);
+                        });
+}
+
 // ---------------------------------------------------------------------------------------------
 // Paths
 

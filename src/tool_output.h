@@ -62,6 +62,10 @@ bool write_labels_txt(std::ostream& os, const std::vector<long>& labels);
 bool write_labels_ply(std::ostream& os, const Soup& soup, const std::vector<double>& distances,
                       const std::vector<long>& labels);
 
+/// Binary PLY of the file's points and polygons: each point has its pattern `instance` (int, -1
+/// outside every instance) and the colour of its instance.
+bool write_instances_ply(std::ostream& os, const Soup& soup, const std::vector<long>& instances);
+
 /// A colour per source index (hues far apart for neighbouring indices), grey for -1.
 CGAL::IO::Color label_color(long label);
 

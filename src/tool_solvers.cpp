@@ -5,6 +5,7 @@
 #include "tool_error.h"
 #include "tool_stats.h"
 #include "tool_text.h"
+#include "tool_threads.h"
 
 #include <CGAL_ext/Surface_mesh_geodesic_paths.h>
 #include <CGAL_ext/farthest_point_sampling.h>
@@ -13,7 +14,6 @@
 #include <CGAL_ext/geodesic_voronoi_diagram.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/global_control.h>
 #include <tbb/task_arena.h>
 #endif
 
@@ -36,28 +36,6 @@ typedef CGAL::Parallel_tag Parallel_tag;
 #else
 typedef CGAL::Sequential_tag Parallel_tag; // never run: solver_choice() refuses the parallel solvers
 #endif
-
-/// While alive, lets the library's arena of `threads` threads (0: TBB's default) have them all.
-/// Otherwise TBB caps its workers at the number of cores minus one and, asked for more, prints a
-/// warning on the standard error. The tool owns its process, so a process-wide limit is fine here.
-class Thread_allowance
-{
-public:
-  explicit Thread_allowance(int threads)
-  {
-#ifdef CGAL_LINKED_WITH_TBB
-    if(threads > 0)
-      m_control.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
-#else
-    (void)threads;
-#endif
-  }
-
-private:
-#ifdef CGAL_LINKED_WITH_TBB
-  std::optional<tbb::global_control> m_control;
-#endif
-};
 
 /// The vertex of the mesh of a vertex id of the file.
 Vertex_index mesh_vertex(const Mesh_file& file, const Surface_point& s) { return file.vertex_of_point[*s.vertex]; }

@@ -9,6 +9,7 @@
 #include "tool_mesh.h"
 #include "tool_options.h"
 #include "tool_output.h"
+#include "tool_patterns.h"
 #include "tool_text.h"
 
 #include <CGAL_ext/Geodesics_3/Tolerances.h>
@@ -1599,6 +1600,8 @@ std::string binary_ply_with_nan()
 const std::string triangle_points = "0 0 0\n1 0 0\n0 1 0\n";
 
 const std::vector<std::pair<std::string, std::string>> bad_files = {
+  {"far.txt", "0\n99999\n"},
+  {"apart.txt", "# two vertices far apart\n0\n1500\n"},
   {"quad.off", "OFF\n4 1 0\n" + triangle_points + "1 1 0\n4 0 1 3 2\n"},
   {"nan.ply", binary_ply_with_nan()},
   {"nan.off", "OFF\n3 1 0\n0 0 0\n1 0 nan\n0 1 0\n3 0 1 2\n"},
@@ -1755,6 +1758,25 @@ const Bad_case bad_cases[] = {
   {"voronoi_same_files", V + " --source 0,100 --bisectors c.txt", "c.txt", "name the same file 'c.txt'"},
   {"voronoi_source_out_of_range", V + " --source 0,2775", "c.txt", "source '2775'"},
   {"voronoi_missing_source", V, "c.txt", "--source"},
+  {"patterns_no_patch", "patterns '" + elephant + "'", "p.json", "mark the pattern"},
+  {"patterns_radius_zero", "patterns '" + elephant + "' --patch-center 0 --patch-radius 0", "p.json",
+   "--patch-radius must be positive"},
+  {"patterns_center_out_of_range", "patterns '" + elephant + "' --patch-center 2775 --patch-radius 0.1", "p.json",
+   "patch centre '2775'"},
+  {"patterns_empty_scales", "patterns '" + elephant + "' --patch-center 0 --patch-radius 0.1 --scales 2:1", "p.json",
+   "empty scale range"},
+  {"patterns_bad_scales", "patterns '" + elephant + "' --patch-center 0 --patch-radius 0.1 --scales 2", "p.json",
+   "expected A:B"},
+  {"patterns_txt_output", "patterns '" + elephant + "' --patch-center 0 --patch-radius 0.1", "p.txt",
+   "the instances are written as .json"},
+  {"patterns_missing_list", "patterns '" + elephant + "' --patch-vertices missing.txt", "p.json",
+   "cannot read --patch-vertices 'missing.txt'"},
+  {"patterns_list_out_of_range", "patterns '" + elephant + "' --patch-vertices far.txt", "p.json",
+   "far.txt line 2: vertex 99999 is out of range"},
+  {"patterns_list_not_connected", "patterns '" + elephant + "' --patch-vertices apart.txt", "p.json",
+   "not connected"},
+  {"patterns_radius_beyond_the_mesh", "patterns '" + elephant + "' --patch-center 0 --patch-radius 100", "p.json",
+   "larger than the mesh"},
 };
 
 class Bad_input : public Tool, public ::testing::WithParamInterface<Bad_case>
@@ -1906,6 +1928,79 @@ TEST_F(Tool, voronoi_cells_bisectors_and_dual_graph)
   }
   EXPECT_EQ(vertices, 4u);
   EXPECT_EQ(dual_edges, bisector_pairs);
+}
+
+// ---------------------------------------------------------------------------------------------
+// geodesic patterns
+
+// A plane of quads with round bumps laid out irregularly: every bump is found from one, the
+// JSON lists them with the marked one first, the labels and the arrangement follow them.
+TEST_F(Tool, patterns_finds_every_bump_of_a_plane)
+{
+  const int n = 81;
+  const double h = 1.0 / (n - 1), radius = 0.08;
+  const std::vector<std::array<double, 2>> bumps = {{0.2, 0.2}, {0.55, 0.25}, {0.8, 0.5}, {0.3, 0.6}, {0.65, 0.8}};
+  std::ostringstream off;
+  off << "OFF\n" << n * n << " " << (n - 1) * (n - 1) << " 0\n";
+  off.precision(17);
+  for(int j = 0; j < n; ++j)
+    for(int i = 0; i < n; ++i) {
+      double z = 0;
+      for(const auto& b : bumps) {
+        const double r2 = ((i * h - b[0]) * (i * h - b[0]) + (j * h - b[1]) * (j * h - b[1])) / (radius * radius);
+        z += r2 < 1 ? 0.4 * radius * (1 - r2) * (1 - r2) : 0.0;
+      }
+      off << i * h << " " << j * h << " " << z << "\n";
+    }
+  for(int j = 0; j + 1 < n; ++j)
+    for(int i = 0; i + 1 < n; ++i)
+      off << "4 " << j * n + i << " " << j * n + i + 1 << " " << (j + 1) * n + i + 1 << " " << (j + 1) * n + i << "\n";
+  write("bumps.off", off.str());
+  const int centre = 16 * n + 16; // (0.2, 0.2)
+  const Result r = run("patterns bumps.off --patch-center " + std::to_string(centre) +
+                       " --patch-radius 0.08 --output p.json --labels p.ply --arrangement a.obj --stats");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string json = read_text(path("p.json"));
+  std::size_t instances = 0;
+  for(std::size_t at = json.find("\"center_vertex\""); at != std::string::npos;
+      at = json.find("\"center_vertex\"", at + 1))
+    ++instances;
+  EXPECT_EQ(instances, bumps.size()) << json.substr(0, 400);
+  EXPECT_NE(json.find("\"center_vertex\": " + std::to_string(centre)), std::string::npos);
+  EXPECT_EQ(json.rfind("{\n  \"instances\": [", 0), 0u);
+  EXPECT_NE(read_text(path("p.ply")).find("property int instance"), std::string::npos);
+  std::size_t centres = 0, edges = 0;
+  for(const std::string& line : lines_of(read_text(path("a.obj")))) {
+    centres += line.rfind("v ", 0) == 0;
+    edges += line.rfind("l ", 0) == 0;
+  }
+  EXPECT_EQ(centres, bumps.size());
+  EXPECT_GE(edges, bumps.size() - 1);
+  std::string stats_text; // without the line that notes the triangulated quads
+  for(const std::string& line : lines_of(r.err))
+    if(line.rfind("note: ", 0) != 0)
+      stats_text += line + "\n";
+  const auto stats = parse_key_values(stats_text);
+  EXPECT_EQ(stats.at("instances"), std::to_string(bumps.size()));
+  for(const char* key : {"seconds_sampling", "seconds_signatures", "seconds_matching", "seconds_clustering",
+                         "seconds_optimization", "seconds_arrangement"})
+    EXPECT_EQ(stats.count(key), 1u) << key;
+}
+
+TEST(Tool_options, scale_ranges_and_vertex_lists)
+{
+  using geodesic_tool::parse_scale_range;
+  using geodesic_tool::read_vertex_list;
+  EXPECT_EQ(parse_scale_range("0.5:2"), std::make_pair(0.5, 2.0));
+  EXPECT_EQ(parse_scale_range("1:1"), std::make_pair(1.0, 1.0));
+  EXPECT_NE(tool_error_of([] { parse_scale_range("0:2"); }).find("positive"), std::string::npos);
+  EXPECT_NE(tool_error_of([] { parse_scale_range("a:b"); }).find("expected A:B"), std::string::npos);
+  std::istringstream list("# the patch\n3\n\n  7\n");
+  EXPECT_EQ(read_vertex_list(list, 10, "l.txt"), (std::vector<std::size_t>{3, 7}));
+  std::istringstream junk("3 4\n");
+  EXPECT_NE(tool_error_of([&] { read_vertex_list(junk, 10, "l.txt"); }).find("l.txt line 1"), std::string::npos);
+  std::istringstream empty("# nothing\n");
+  EXPECT_NE(tool_error_of([&] { read_vertex_list(empty, 10, "l.txt"); }).find("no vertex id"), std::string::npos);
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -1,0 +1,291 @@
+// Copyright (c) 2026 The CGAL_ext geodesics developers.
+
+#include "tool_patterns.h"
+
+#include "tool_error.h"
+#include "tool_options.h"
+#include "tool_output.h"
+#include "tool_solvers.h"
+#include "tool_stats.h"
+#include "tool_text.h"
+#include "tool_threads.h"
+#include "tool_voronoi.h"
+
+#include <CGAL_ext/detect_repetitive_patterns.h>
+
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+namespace geodesic_tool {
+
+void add_patterns_command(CLI::App& app, Patterns_options& options)
+{
+  CLI::App* cmd = app.add_subcommand(
+    "patterns", "Repetitive pattern detection (thesis chapter 5): from one marked instance, all the others, with a "
+                "correspondence to each and their arrangement");
+  cmd->add_option("MESH", options.mesh, "Mesh (.off, .obj, .ply or .stl), as for the distances subcommand")
+    ->required();
+  CLI::Option* center = cmd->add_option(
+    "--patch-center", options.patch_center,
+    "The centre of the marked instance: a vertex id (a face point F:a,b,c is taken at its nearest corner)");
+  CLI::Option* radius = cmd->add_option("--patch-radius", options.patch_radius,
+                                        "The geodesic radius of the marked instance around --patch-center");
+  CLI::Option* list = cmd->add_option(
+    "--patch-vertices", options.patch_vertices,
+    "Instead of a disk: a text file of the marked instance's vertex ids, one per line (any connected shape)");
+  center->needs(radius);
+  radius->needs(center);
+  list->excludes(center)->excludes(radius);
+  cmd->add_option("--scales", options.scales,
+                  "A:B, the sizes of instances sought relative to the marked one (adaptive patterns); default 1:1");
+  cmd->add_option("--sample-spacing", options.sample_spacing,
+                  "Covering radius of the samples, relative to the patch's size; default 1/3");
+  cmd->add_option("--match-tolerance", options.match_tolerance,
+                  "How far two signatures may differ to match, relative to the patch's; default 0.35");
+  cmd->add_option("--consistency-cutoff", options.consistency_cutoff,
+                  "c0: how well matched distances must agree, in [0, 1); default 0.7");
+  cmd->add_option("--threads", options.threads, "Number of threads; default: all cores");
+  cmd->add_option("--output", options.output,
+                  "The instances, .json: {\"instances\": [{\"center\", \"center_vertex\", \"scale\", \"energy\", "
+                  "\"vertices\", \"correspondence\"}, ...], \"arrangement\": {...}}, the marked one first")
+    ->required();
+  cmd->add_option("--labels", options.labels,
+                  "The instance of every vertex: .ply (per-vertex 'instance', -1 outside any, a colour per "
+                  "instance) or .txt (one per line)");
+  cmd->add_option("--arrangement", options.arrangement,
+                  "The arrangement, .obj: the instance centres and a line between neighbouring instances (the dual of "
+                  "the geodesic Voronoi diagram of the centres)");
+  cmd->add_flag("--stats", options.stats, "Print key=value statistics (the time of each step) on the standard error");
+}
+
+std::pair<double, double> parse_scale_range(const std::string& text)
+{
+  const std::size_t colon = text.find(':');
+  double a = 0, b = 0;
+  bool ok = colon != std::string::npos;
+  if(ok) {
+    std::istringstream first(text.substr(0, colon)), second(text.substr(colon + 1));
+    ok = bool(first >> a) && first.eof() && bool(second >> b) && second.eof();
+  }
+  if(!ok)
+    throw Tool_error("--scales '" + text + "': expected A:B, two positive numbers");
+  if(!(a > 0) || !(b > 0) || !std::isfinite(a) || !std::isfinite(b))
+    throw Tool_error("--scales '" + text + "': the scales must be positive");
+  if(a > b)
+    throw Tool_error("--scales '" + text + "': empty scale range (A must not exceed B)");
+  return {a, b};
+}
+
+std::vector<std::size_t> read_vertex_list(std::istream& in, std::size_t number_of_vertices, const std::string& name)
+{
+  std::vector<std::size_t> ids;
+  std::string line;
+  for(std::size_t number = 1; std::getline(in, line); ++number) {
+    const std::size_t start = line.find_first_not_of(" \t\r");
+    if(start == std::string::npos || line[start] == '#')
+      continue;
+    std::istringstream s(line);
+    long long id = -1;
+    std::string rest;
+    if(!(s >> id) || (s >> rest))
+      throw Tool_error(name + " line " + std::to_string(number) + ": expected one vertex id, got '" + line + "'");
+    if(id < 0 || std::size_t(id) >= number_of_vertices)
+      throw Tool_error(name + " line " + std::to_string(number) + ": vertex " + std::to_string(id) +
+                       " is out of range (the mesh has " + std::to_string(number_of_vertices) + " vertices)");
+    ids.push_back(std::size_t(id));
+  }
+  if(ids.empty())
+    throw Tool_error(name + ": no vertex id");
+  return ids;
+}
+
+bool write_instances_json(std::ostream& os, const std::vector<Found_instance>& instances,
+                          const std::vector<std::pair<std::size_t, std::size_t>>& edges,
+                          const std::vector<std::array<std::size_t, 3>>& triangles)
+{
+  const auto number = [](double x) {
+    std::ostringstream s;
+    s.precision(17);
+    s << x;
+    return s.str();
+  };
+  os << "{\n  \"instances\": [";
+  for(std::size_t i = 0; i < instances.size(); ++i) {
+    const Found_instance& f = instances[i];
+    os << (i ? ",\n" : "\n") << "    {\"center\": [" << number(f.center.x()) << ", " << number(f.center.y()) << ", "
+       << number(f.center.z()) << "], \"center_vertex\": " << f.center_vertex << ", \"scale\": " << number(f.scale)
+       << ", \"energy\": " << number(f.energy) << ",\n     \"vertices\": [";
+    for(std::size_t k = 0; k < f.vertices.size(); ++k)
+      os << (k ? ", " : "") << f.vertices[k];
+    os << "],\n     \"correspondence\": [";
+    for(std::size_t k = 0; k < f.correspondence.size(); ++k)
+      os << (k ? ", " : "") << "[" << f.correspondence[k].first << ", " << f.correspondence[k].second << "]";
+    os << "]}";
+  }
+  os << "\n  ],\n  \"arrangement\": {\"edges\": [";
+  for(std::size_t k = 0; k < edges.size(); ++k)
+    os << (k ? ", " : "") << "[" << edges[k].first << ", " << edges[k].second << "]";
+  os << "], \"triangles\": [";
+  for(std::size_t k = 0; k < triangles.size(); ++k)
+    os << (k ? ", " : "") << "[" << triangles[k][0] << ", " << triangles[k][1] << ", " << triangles[k][2] << "]";
+  os << "]}\n}\n";
+  return bool(os);
+}
+
+namespace {
+
+struct Patterns_found
+{
+  std::vector<Found_instance> instances;
+  std::vector<long> labels; // per point of the file
+  std::vector<std::pair<std::size_t, std::size_t>> edges;
+  std::vector<std::array<std::size_t, 3>> triangles;
+  CGAL_ext::Pattern_statistics stats;
+};
+
+Patterns_found detect(const Mesh_file& file, const CGAL_ext::Pattern_patch<Mesh>& patch, const Patterns_options& o,
+                      std::pair<double, double> scales)
+{
+  const Thread_allowance allowance(o.threads);
+  const auto found = CGAL_ext::detect_repetitive_patterns<CGAL::Parallel_if_available_tag>(
+    file.mesh, patch,
+    CGAL_ext::parameters::scale_range(scales)
+      .sample_spacing(o.sample_spacing)
+      .match_tolerance(o.match_tolerance)
+      .consistency_cutoff(o.consistency_cutoff)
+      .number_of_threads(o.threads));
+  const std::vector<std::size_t> point = point_of_vertex(file);
+  Patterns_found out;
+  std::vector<long> label_of_vertex(file.mesh.number_of_vertices(), -1);
+  for(std::size_t i = 0; i < found.instances.size(); ++i) {
+    const auto& instance = found.instances[i];
+    Found_instance f;
+    f.center = instance.center;
+    f.center_vertex = point[instance.center_vertex.idx()];
+    f.scale = instance.scale;
+    f.energy = instance.energy;
+    for(Vertex_index v : instance.vertices) {
+      f.vertices.push_back(point[v.idx()]);
+      label_of_vertex[v.idx()] = long(i);
+    }
+    std::sort(f.vertices.begin(), f.vertices.end());
+    f.vertices.erase(std::unique(f.vertices.begin(), f.vertices.end()), f.vertices.end());
+    for(const auto& [p, q] : instance.correspondence)
+      f.correspondence.emplace_back(point[p.idx()], point[q.idx()]);
+    out.instances.push_back(std::move(f));
+  }
+  for(Vertex_index v : file.vertex_of_point)
+    out.labels.push_back(label_of_vertex[v.idx()]);
+  out.edges = found.arrangement_edges;
+  out.triangles = found.arrangement_triangles;
+  out.stats = found.statistics;
+  return out;
+}
+
+} // namespace
+
+int run_patterns(const Patterns_options& options)
+{
+  // Validate the command line before the (possibly long) reading and detection.
+  if(options.patch_center.empty() && options.patch_vertices.empty())
+    throw Tool_error("mark the pattern: --patch-center S --patch-radius R, or --patch-vertices FILE");
+  const std::pair<double, double> scales =
+    options.scales.empty() ? std::make_pair(1.0, 1.0) : parse_scale_range(options.scales);
+  std::optional<Surface_point> center;
+  if(!options.patch_center.empty()) {
+    center = parse_surface_point(options.patch_center, "patch centre");
+    if(!(options.patch_radius > 0) || !std::isfinite(options.patch_radius))
+      throw Tool_error("--patch-radius must be positive, got " + std::to_string(options.patch_radius));
+  }
+  if(options.output.size() < 5 || options.output.compare(options.output.size() - 5, 5, ".json") != 0)
+    throw Tool_error("--output '" + options.output + "': the instances are written as .json");
+  const Output_format labels_format = options.labels.empty() ? Output_format::txt : output_format(options.labels);
+  if(!options.arrangement.empty() && output_format(options.arrangement, true) != Output_format::obj)
+    throw Tool_error("--arrangement '" + options.arrangement + "': the arrangement is written as .obj");
+  check_distinct_outputs(
+    {{"--output", options.output}, {"--labels", options.labels}, {"--arrangement", options.arrangement}});
+
+  const Stopwatch read_watch;
+  const Mesh_file file = read_mesh_file(options.mesh);
+  const double seconds_read = read_watch.seconds();
+  CGAL_ext::Pattern_patch<Mesh> patch;
+  if(center) {
+    check_surface_point_range(*center, file.soup.points.size(), file.soup.polygons.size(), "patch centre");
+    std::size_t vertex = center->vertex ? *center->vertex : 0;
+    if(!center->vertex) { // the corner with the largest barycentric coordinate
+      const std::vector<std::size_t>& polygon = file.soup.polygons[center->face];
+      std::size_t best = 0;
+      for(std::size_t k = 1; k < 3 && k < polygon.size(); ++k)
+        if(center->barycentric[k] > center->barycentric[best])
+          best = k;
+      vertex = polygon[best];
+    }
+    patch = CGAL_ext::Pattern_patch<Mesh>::disk(file.vertex_of_point[vertex], options.patch_radius);
+  } else {
+    std::ifstream in(options.patch_vertices);
+    if(!in)
+      throw Tool_error("cannot read --patch-vertices '" + options.patch_vertices + "'");
+    std::vector<Vertex_index> vertices;
+    for(std::size_t id : read_vertex_list(in, file.soup.points.size(), options.patch_vertices))
+      vertices.push_back(file.vertex_of_point[id]);
+    patch = CGAL_ext::Pattern_patch<Mesh>::of_vertices(vertices);
+  }
+
+  const Stopwatch detect_watch;
+  const Patterns_found found = detect(file, patch, options, scales);
+  const double seconds_detect = detect_watch.seconds();
+
+  std::vector<Output_file> outputs{{options.output, [&](std::ostream& os) {
+                                      return write_instances_json(os, found.instances, found.edges, found.triangles);
+                                    }}};
+  if(!options.labels.empty())
+    outputs.push_back({options.labels, [&](std::ostream& os) {
+                         return labels_format == Output_format::ply ? write_instances_ply(os, file.soup, found.labels)
+                                                                    : write_labels_txt(os, found.labels);
+                       }});
+  if(!options.arrangement.empty()) {
+    std::vector<Point> centres;
+    for(const Found_instance& f : found.instances)
+      centres.push_back(f.center);
+    outputs.push_back({options.arrangement, [&, centres](std::ostream& os) {
+                         return write_dual_obj(os, centres, found.edges, found.triangles);
+                       }});
+  }
+  write_outputs(outputs);
+
+  if(!file.repairs.summary().empty())
+    std::cerr << "note: " << file.repairs.summary() << std::endl;
+  if(options.stats) {
+    const CGAL_ext::Pattern_statistics& st = found.stats;
+    std::ostringstream s;
+    s << "points=" << file.soup.points.size() << "\n"
+      << "polygons=" << file.soup.polygons.size() << "\n"
+      << "seconds_read=" << seconds_read << "\n"
+      << "patch_radius=" << st.patch_radius << "\n"
+      << "samples=" << st.samples << "\n"
+      << "patch_samples=" << st.patch_samples << "\n"
+      << "matches=" << st.matches << "\n"
+      << "clusters=" << st.clusters << "\n"
+      << "searches=" << st.searches << "\n"
+      << "instances=" << found.instances.size() << "\n"
+      << "arrangement_edges=" << found.edges.size() << "\n"
+      << "seconds_sampling=" << st.sampling_seconds << "\n"
+      << "seconds_signatures=" << st.signature_seconds << "\n"
+      << "seconds_matching=" << st.matching_seconds << "\n"
+      << "seconds_clustering=" << st.clustering_seconds << "\n"
+      << "seconds_optimization=" << st.optimization_seconds << "\n"
+      << "seconds_arrangement=" << st.arrangement_seconds << "\n"
+      << "seconds_detection=" << seconds_detect << "\n"
+      << "peak_rss_mb=" << peak_rss_mb() << "\n";
+    std::cerr << s.str() << std::flush;
+  }
+  return 0;
+}
+
+} // namespace geodesic_tool

@@ -1,0 +1,72 @@
+// Copyright (c) 2026 The CGAL_ext geodesics developers.
+// `geodesic patterns`: the instances of a repetitive pattern from one marked instance, their
+// correspondences and their arrangement (thesis chapter 5).
+
+#ifndef GEODESIC_TOOL_PATTERNS_H
+#define GEODESIC_TOOL_PATTERNS_H
+
+#include "tool_mesh.h"
+
+#include <array>
+#include <cstddef>
+#include <istream>
+#include <ostream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CLI {
+class App;
+}
+
+namespace geodesic_tool {
+
+struct Patterns_options
+{
+  std::string mesh;
+  std::string patch_center;   // a vertex id (a face point is taken at its nearest corner)
+  double patch_radius = 0;
+  std::string patch_vertices; // a file of vertex ids
+  std::string scales;         // "A:B"
+  double sample_spacing = 1.0 / 3;
+  double match_tolerance = 0.35;
+  double consistency_cutoff = 0.7;
+  int threads = 0;
+  std::string output;      // .json
+  std::string labels;      // .ply or .txt
+  std::string arrangement; // .obj
+  bool stats = false;
+};
+
+/// An instance as the tool writes it, in the file's ids.
+struct Found_instance
+{
+  Point center;
+  std::size_t center_vertex = 0;
+  double scale = 1;
+  double energy = 0;
+  std::vector<std::size_t> vertices;
+  std::vector<std::pair<std::size_t, std::size_t>> correspondence;
+};
+
+void add_patterns_command(CLI::App& app, Patterns_options& options);
+
+/// "A:B" with 0 < A <= B; throws Tool_error otherwise.
+std::pair<double, double> parse_scale_range(const std::string& text);
+
+/// Vertex ids, one per line (blank lines and lines starting with '#' skipped), each below
+/// `number_of_vertices`; throws Tool_error naming the line otherwise.
+std::vector<std::size_t> read_vertex_list(std::istream& in, std::size_t number_of_vertices, const std::string& name);
+
+/// `{"instances": [...], "arrangement": {"edges": [...], "triangles": [...]}}`, the marked patch
+/// first; each instance has "center", "center_vertex", "scale", "energy", "vertices" and
+/// "correspondence" (pairs of vertex ids: a patch sample and its image).
+bool write_instances_json(std::ostream& os, const std::vector<Found_instance>& instances,
+                          const std::vector<std::pair<std::size_t, std::size_t>>& edges,
+                          const std::vector<std::array<std::size_t, 3>>& triangles);
+
+int run_patterns(const Patterns_options& options);
+
+} // namespace geodesic_tool
+
+#endif // GEODESIC_TOOL_PATTERNS_H
