@@ -8,7 +8,11 @@
 #include "analytic_surfaces.h"
 #include "meshes.h"
 
+#include <array>
+#include <algorithm>
 #include <cmath>
+#include <map>
+#include <ostream>
 #include <random>
 #include <vector>
 
@@ -116,37 +120,44 @@ inline std::vector<Vector> fibonacci_directions(int count)
   return out;
 }
 
-/// A sphere of radius 1 (a subdivided icosahedron, `levels` times) with a dimple of angular
-/// radius `dimple_angle` and relative depth `depth` around each of `centres`.
-inline Mesh golf_ball(int levels, const std::vector<Vector>& centres, double dimple_angle, double depth)
+/// A sphere of radius 1 (an icosahedron whose faces are cut into `frequency`^2 triangles, points
+/// pushed onto the sphere: 10 frequency^2 + 2 vertices) with a dimple of angular radius
+/// `dimple_angle` and relative depth `depth` around each of `centres`.
+inline Mesh golf_ball(int frequency, const std::vector<Vector>& centres, double dimple_angle, double depth)
 {
   const double t = (1 + std::sqrt(5.0)) / 2;
-  std::vector<Point> points = {Point(-1, t, 0), Point(1, t, 0),  Point(-1, -t, 0), Point(1, -t, 0),
-                               Point(0, -1, t), Point(0, 1, t),  Point(0, -1, -t), Point(0, 1, -t),
-                               Point(t, 0, -1), Point(t, 0, 1),  Point(-t, 0, -1), Point(-t, 0, 1)};
-  std::vector<Triangle> triangles = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
-                                     {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
-                                     {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
-                                     {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
-  for(int level = 0; level < levels; ++level) {
-    std::map<std::pair<int, int>, int> middle;
-    const auto mid = [&](int a, int b) {
-      const auto key = std::make_pair(std::min(a, b), std::max(a, b));
-      const auto it = middle.find(key);
-      if(it != middle.end())
-        return it->second;
-      points.push_back(CGAL::midpoint(points[std::size_t(a)], points[std::size_t(b)]));
-      return middle[key] = int(points.size()) - 1;
+  const std::vector<Point> corners = {Point(-1, t, 0), Point(1, t, 0),  Point(-1, -t, 0), Point(1, -t, 0),
+                                      Point(0, -1, t), Point(0, 1, t),  Point(0, -1, -t), Point(0, 1, -t),
+                                      Point(t, 0, -1), Point(t, 0, 1),  Point(-t, 0, -1), Point(-t, 0, 1)};
+  const std::vector<Triangle> faces = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
+                                       {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
+                                       {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
+                                       {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
+  std::vector<Point> points;
+  std::map<std::array<long long, 3>, int> index; // points on shared edges once
+  const auto point_index = [&](const Point& p) {
+    const std::array<long long, 3> key = {std::llround(p.x() * 1e9), std::llround(p.y() * 1e9),
+                                          std::llround(p.z() * 1e9)};
+    const auto it = index.find(key);
+    if(it != index.end())
+      return it->second;
+    points.push_back(p);
+    return index[key] = int(points.size()) - 1;
+  };
+  std::vector<Triangle> triangles;
+  const int m = frequency;
+  for(const Triangle& f : faces) {
+    const Point &a = corners[std::size_t(f[0])], &b = corners[std::size_t(f[1])], &c = corners[std::size_t(f[2])];
+    const auto at = [&](int i, int j) { // i steps towards b, j towards c
+      const double u = double(i) / m, v = double(j) / m;
+      return point_index(CGAL::ORIGIN + ((a - CGAL::ORIGIN) * (1 - u - v) + (b - CGAL::ORIGIN) * u + (c - CGAL::ORIGIN) * v));
     };
-    std::vector<Triangle> finer;
-    for(const Triangle& f : triangles) {
-      const int a = mid(f[0], f[1]), b = mid(f[1], f[2]), c = mid(f[2], f[0]);
-      finer.push_back({f[0], a, c});
-      finer.push_back({f[1], b, a});
-      finer.push_back({f[2], c, b});
-      finer.push_back({a, b, c});
-    }
-    triangles.swap(finer);
+    for(int i = 0; i < m; ++i)
+      for(int j = 0; i + j < m; ++j) {
+        triangles.push_back({at(i, j), at(i + 1, j), at(i, j + 1)});
+        if(i + j + 1 < m)
+          triangles.push_back({at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
+      }
   }
   for(Point& p : points) {
     const Vector d = (p - CGAL::ORIGIN) / std::sqrt((p - CGAL::ORIGIN).squared_length());
@@ -161,6 +172,179 @@ inline Mesh golf_ball(int levels, const std::vector<Vector>& centres, double dim
     p = CGAL::ORIGIN + d * radius;
   }
   return mesh_from_soup(points, triangles);
+}
+
+/// The vertex nearest to `p`.
+inline Vertex nearest_vertex(const Mesh& m, const Point& p)
+{
+  Vertex best = *m.vertices().begin();
+  for(Vertex v : m.vertices())
+    if(CGAL::squared_distance(m.point(v), p) < CGAL::squared_distance(m.point(best), p))
+      best = v;
+  return best;
+}
+
+/// The planted instances: where each centre is on the surface and its radius.
+struct Truth
+{
+  std::vector<Point> centres;
+  std::vector<double> radii;
+};
+
+/// How found instances compare with the planted ones: a found centre is right when it lies
+/// within a quarter of the instance radius of a planted centre not claimed yet.
+struct Score
+{
+  double recall = 0, precision = 0;
+  std::size_t found = 0, right = 0, planted = 0;
+};
+
+/// `instances` have a `center` point.
+template <class Instances>
+Score score(const Instances& instances, const Truth& truth)
+{
+  Score s;
+  s.planted = truth.centres.size();
+  s.found = instances.size();
+  std::vector<bool> claimed(truth.centres.size(), false);
+  for(const auto& instance : instances) {
+    std::size_t best = truth.centres.size();
+    double best_d = 0;
+    for(std::size_t i = 0; i < truth.centres.size(); ++i) {
+      const double d = std::sqrt(CGAL::squared_distance(instance.center, truth.centres[i]));
+      if(!claimed[i] && d <= 0.25 * truth.radii[i] && (best == truth.centres.size() || d < best_d)) {
+        best = i;
+        best_d = d;
+      }
+    }
+    if(best < truth.centres.size()) {
+      claimed[best] = true;
+      ++s.right;
+    }
+  }
+  s.recall = double(s.right) / double(std::max<std::size_t>(1, s.planted));
+  s.precision = double(s.right) / double(std::max<std::size_t>(1, s.found));
+  return s;
+}
+
+inline std::ostream& operator<<(std::ostream& out, const Score& s)
+{
+  return out << "recall " << s.recall << " precision " << s.precision << " (" << s.right << " right of "
+             << s.found << " found, " << s.planted << " planted)";
+}
+
+/// A mesh with planted instances, what they are, and the patch that marks one of them.
+struct Pattern_scene
+{
+  Mesh mesh;
+  Truth truth;
+  Vertex patch_centre;                  ///< a disk patch, when `patch_radius` > 0
+  double patch_radius = 0;
+  std::vector<Vertex> patch_vertices;   ///< otherwise a vertex list
+  std::pair<double, double> scales{1.0, 1.0};
+};
+
+/// Round bumps of `radius` (height 0.4 radius) laid out irregularly on the unit square, an
+/// n x n grid, vertices moved at random by `noise` edge lengths; the first bump is marked.
+inline Pattern_scene round_bumps_on_a_plane(int n, int count, double radius, unsigned seed, double noise)
+{
+  Pattern_scene scene;
+  const double h = 1.0 / (n - 1);
+  const std::vector<Planted> bumps = irregular_layout(count, 1.2 * radius, 1 - 1.2 * radius, 1.2 * radius,
+                                                      1 - 1.2 * radius, 2.5 * radius, radius, seed);
+  scene.mesh = bumpy_plane(n, h, bumps, 0.4);
+  add_noise(scene.mesh, noise * h, seed + 1);
+  for(const Planted& b : bumps) {
+    scene.truth.centres.push_back(Point(b.x, b.y, 0.4 * radius));
+    scene.truth.radii.push_back(radius);
+  }
+  scene.patch_centre = nearest_vertex(scene.mesh, scene.truth.centres[0]);
+  scene.patch_radius = radius;
+  return scene;
+}
+
+/// A golf ball: `count` dimples of angular radius `angle` spread by the golden angle over a
+/// sphere of 10 frequency^2 + 2 vertices, moved by `noise` (absolute); a dimple is marked.
+inline Pattern_scene dimples_on_a_sphere(int frequency, int count, double angle, double noise)
+{
+  Pattern_scene scene;
+  const std::vector<Vector> directions = fibonacci_directions(count);
+  const double depth = 0.3;
+  scene.mesh = golf_ball(frequency, directions, angle, depth);
+  add_noise(scene.mesh, noise, 5);
+  for(const Vector& d : directions) {
+    scene.truth.centres.push_back(CGAL::ORIGIN + d * (1 - depth * angle));
+    scene.truth.radii.push_back(angle);
+  }
+  scene.patch_centre = nearest_vertex(scene.mesh, scene.truth.centres[std::size_t(count) / 8]);
+  scene.patch_radius = angle;
+  return scene;
+}
+
+/// Round bumps laid out irregularly around an open cylinder of radius 1 and length 6.
+inline Pattern_scene bumps_around_a_cylinder(int segments, int rows, int count, double radius, unsigned seed)
+{
+  Pattern_scene scene;
+  const double r = 1, height = 0.35;
+  const std::vector<Planted> bumps =
+    irregular_layout(count, 0.4, 2 * pi * r - 0.4, 0.5, 5.5, 2.5 * radius, radius, seed);
+  scene.mesh = bumpy_cylinder(r, segments, 6, rows, bumps, height);
+  for(const Planted& b : bumps) {
+    const double a = b.x / r, lifted = r + height * radius;
+    scene.truth.centres.push_back(Point(lifted * std::cos(a), lifted * std::sin(a), b.y));
+    scene.truth.radii.push_back(radius);
+  }
+  scene.patch_centre = nearest_vertex(scene.mesh, scene.truth.centres[0]);
+  scene.patch_radius = radius;
+  return scene;
+}
+
+/// Bumps twice as long as wide (short semi-axis `radius`), turned at random, on the unit
+/// square; the first is marked by its vertices. Its truth radius is the short semi-axis.
+inline Pattern_scene elongated_bumps_on_a_plane(int n, int count, double radius, unsigned seed, double noise)
+{
+  Pattern_scene scene;
+  const double h = 1.0 / (n - 1);
+  std::vector<Planted> bumps = irregular_layout(count, 2.4 * radius, 1 - 2.4 * radius, 2.4 * radius,
+                                                1 - 2.4 * radius, 4.6 * radius, radius, seed);
+  std::mt19937 rng(seed + 2);
+  std::uniform_real_distribution<double> turn(0, pi);
+  for(Planted& b : bumps) {
+    b.stretch = 2;
+    b.angle = turn(rng);
+  }
+  scene.mesh = bumpy_plane(n, h, bumps, 0.5);
+  add_noise(scene.mesh, noise * h, seed + 1);
+  for(const Planted& b : bumps) {
+    scene.truth.centres.push_back(Point(b.x, b.y, 0.5 * radius));
+    scene.truth.radii.push_back(radius);
+  }
+  for(Vertex v : scene.mesh.vertices())
+    if(bump_profile(bumps[0], scene.mesh.point(v).x(), scene.mesh.point(v).y()) > 0)
+      scene.patch_vertices.push_back(v);
+  return scene;
+}
+
+/// Round bumps of three sizes (0.75, 1 and 1.4 times `radius`) on the unit square; one of size
+/// 1 is marked and the scale range is 0.6:1.6.
+inline Pattern_scene bumps_of_three_sizes_on_a_plane(int n, int count, double radius, unsigned seed, double noise)
+{
+  Pattern_scene scene;
+  const double h = 1.0 / (n - 1);
+  std::vector<Planted> bumps = irregular_layout(count, 1.6 * radius, 1 - 1.6 * radius, 1.6 * radius,
+                                                1 - 1.6 * radius, 3.4 * radius, radius, seed);
+  for(std::size_t i = 0; i < bumps.size(); ++i)
+    bumps[i].radius = radius * (i % 3 == 0 ? 1.0 : i % 3 == 1 ? 0.75 : 1.4);
+  scene.mesh = bumpy_plane(n, h, bumps, 0.4);
+  add_noise(scene.mesh, noise * h, seed + 1);
+  for(const Planted& b : bumps) {
+    scene.truth.centres.push_back(Point(b.x, b.y, 0.4 * b.radius));
+    scene.truth.radii.push_back(b.radius);
+  }
+  scene.patch_centre = nearest_vertex(scene.mesh, scene.truth.centres[0]);
+  scene.patch_radius = radius;
+  scene.scales = {0.6, 1.6};
+  return scene;
 }
 
 } // namespace test_support

@@ -295,10 +295,10 @@ private:
     std::vector<double> from_border(m_vertex.size(), 0.0);
     geodesic_distances<Concurrency>(m_tm, CGAL::make_property_map(from_border), border,
                                     CGAL_ext::parameters::vertex_point_map(m_vpm).vertex_index_map(m_vim));
-    m_center = list.front();
+    std::size_t deepest = list.front();
     for(std::size_t v = 0; v < m_vertex.size(); ++v)
-      if(m_in_patch[v] && from_border[v] > from_border[m_center])
-        m_center = v;
+      if(m_in_patch[v] && from_border[v] > from_border[deepest])
+        deepest = v;
     // a bound on how far the patch reaches: the sum of its edges' lengths
     double bound = 0;
     for(auto e : edges(m_tm)) {
@@ -307,8 +307,36 @@ private:
       if(m_in_patch[a] && m_in_patch[b])
         bound += std::sqrt(double(CGAL::squared_distance(get(m_vpm, m_vertex[a]), get(m_vpm, m_vertex[b]))));
     }
+    bound *= 1 + 1e-9;
+    // The centre is the midpoint of the medial axis: the distance from the border is nearly flat
+    // along the axis of an elongated patch, so its largest value alone may sit anywhere near
+    // the middle. Among the vertices almost as deep as the deepest (the axis), the centre is the
+    // one that is as far as possible from neither end of the patch's longest extent (the two
+    // farthest-apart vertices found by two sweeps).
+    const auto farthest_in_patch = [&](const Row& row) {
+      std::size_t far = row.front().first;
+      double d_far = -1;
+      for(const auto& [v, d] : row)
+        if(m_in_patch[v] && d > d_far) {
+          far = v;
+          d_far = d;
+        }
+      return far;
+    };
+    const std::size_t end_a = farthest_in_patch(local_row(deepest, bound));
+    const Row row_a = local_row(end_a, bound);
+    const std::size_t end_b = farthest_in_patch(row_a);
+    const Row row_b = local_row(end_b, bound);
+    std::vector<double> from_ends(m_vertex.size(), 0.0);
+    for(const Row* row : {&row_a, &row_b})
+      for(const auto& [v, d] : *row)
+        from_ends[v] = std::max(from_ends[v], d);
+    m_center = deepest;
+    for(std::size_t v = 0; v < m_vertex.size(); ++v)
+      if(m_in_patch[v] && from_border[v] >= 0.8 * from_border[deepest] && from_ends[v] < from_ends[m_center])
+        m_center = v;
     m_radius = 0;
-    for(const auto& [v, d] : local_row(m_center, bound * (1 + 1e-9)))
+    for(const auto& [v, d] : local_row(m_center, bound))
       if(m_in_patch[v])
         m_radius = std::max(m_radius, d);
     if(!(m_radius > 0))
