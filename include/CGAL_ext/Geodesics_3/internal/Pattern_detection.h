@@ -736,21 +736,32 @@ private:
   }
 
   // Each instance's centre: from the landmark's image (a sample, up to a spacing away from
-  // where the patch's centre maps), a descent over vertices to the one whose own signature is
-  // most like the patch centre's. Every step evaluates the unvisited neighbours of the current
-  // vertex of every instance still moving, in one batch of local rows.
+  // where the patch's centre maps), a descent over the vertices within two spacings of it to
+  // the one whose own signature is most like the patch centre's and whose distances to the
+  // images of the other patch samples best agree with the patch's (the root mean square of
+  // the differences, relative to the patch's size): the signature alone hardly changes along
+  // the axis of an elongated instance, the distances alone are off by up to a spacing each.
+  // Every step evaluates the unvisited vertices of the two rings around the current vertex of
+  // every instance still moving, in one batch of local rows.
   void place_centres()
   {
     const int rings = m_settings.signature_rings;
     const double signature_radius = m_settings.signature_radius * m_size;
     const std::vector<double>& target = m_patch_signature[m_landmark];
     const std::size_t n = m_instances.size();
+    const std::vector<Row> residual = distance_residuals();
+    const auto residual_of = [&](std::size_t a, std::size_t v) {
+      const auto it = std::lower_bound(residual[a].begin(), residual[a].end(),
+                                       std::make_pair(v, -std::numeric_limits<double>::infinity()));
+      return it != residual[a].end() && it->first == v ? it->second : std::numeric_limits<double>::infinity();
+    };
     std::vector<double> cost(n, 0.0);
     std::vector<bool> moving(n, false);
     std::vector<std::vector<std::size_t>> visited(n);
     for(std::size_t a = 1; a < n; ++a) {
       moving[a] = true;
-      cost[a] = signature_cost(m_landmark, m_instances[a].scale_step, m_instances[a].center_sample);
+      cost[a] = signature_cost(m_landmark, m_instances[a].scale_step, m_instances[a].center_sample) +
+                residual_of(a, m_instances[a].center_vertex);
       visited[a].push_back(m_instances[a].center_vertex);
     }
     const double largest = signature_radius * m_scales.back();
@@ -760,11 +771,19 @@ private:
       for(std::size_t a = 1; a < n; ++a) {
         if(!moving[a])
           continue;
+        // the two rings around the current vertex: a step over one shallow dip
+        std::vector<vertex_descriptor> ring;
         for(vertex_descriptor w : CGAL::vertices_around_target(m_vertex[m_instances[a].center_vertex], m_tm)) {
+          ring.push_back(w);
+          for(vertex_descriptor x : CGAL::vertices_around_target(w, m_tm))
+            ring.push_back(x);
+        }
+        for(vertex_descriptor w : ring) {
           const std::size_t wi = std::size_t(get(m_vim, w));
           if(std::find(visited[a].begin(), visited[a].end(), wi) == visited[a].end()) {
             visited[a].push_back(wi);
-            tried.emplace_back(a, wi);
+            if(std::isfinite(residual_of(a, wi)))
+              tried.emplace_back(a, wi);
           }
         }
       }
@@ -784,7 +803,8 @@ private:
           for(const auto& [v, d] : entries)
             if(d < radius)
               sums.add(d, m_area[v], m_curvature[v]);
-          const double c = signature_distance(target, sums.signature(radius, rings)) / m_signature_norm;
+          const double c = signature_distance(target, sums.signature(radius, rings)) / m_signature_norm +
+                           residual_of(a, tried[r].second);
           if(c < best_cost[a]) {
             best_cost[a] = c;
             best[a] = tried[r].second;
@@ -802,6 +822,62 @@ private:
         }
       }
     }
+  }
+
+  // For every instance, the vertices within two spacings of its landmark's image, each with the
+  // root mean square difference between its distances to the images of the patch samples and
+  // the patch centre's distances to them (times the scale), relative to the patch's size; from
+  // one local row per image. By vertex index.
+  std::vector<Row> distance_residuals() const
+  {
+    const std::size_t k = m_patch_sample.size();
+    std::vector<std::size_t> sources; // the images, each once, with the instances that use them
+    std::vector<std::vector<std::pair<std::size_t, std::size_t>>> users(m_sample_vertex.size());
+    for(std::size_t a = 1; a < m_instances.size(); ++a)
+      for(std::size_t i = 0; i < k; ++i) {
+        const std::size_t q = m_instances[a].correspondence.image[i];
+        if(q == Pattern_correspondence::unmapped)
+          continue;
+        if(users[q].empty())
+          sources.push_back(q);
+        users[q].emplace_back(a, i);
+      }
+    std::vector<Row> candidates(m_instances.size());
+    for(std::size_t a = 1; a < m_instances.size(); ++a)
+      candidates[a] = local_row(m_instances[a].center_vertex, 2 * m_spacing * m_scales[m_instances[a].scale_step]);
+    std::vector<Row> squares = candidates;
+    for(Row& row : squares)
+      for(auto& entry : row)
+        entry.second = 0;
+    double reach = 0;
+    for(std::size_t i = 0; i < k; ++i)
+      reach = std::max(reach, patch_distance(m_landmark, i));
+    reach = (reach + 3 * m_spacing) * m_scales.back();
+    std::vector<vertex_descriptor> source_vertices;
+    for(std::size_t q : sources)
+      source_vertices.push_back(m_vertex[m_sample_vertex[q]]);
+    geodesic_sparse_distance_rows<Concurrency>(
+      m_tm, source_vertices,
+      [&](std::size_t r, const Row& entries) {
+        for(const auto& [a, i] : users[sources[r]]) {
+          const double want = patch_distance(m_landmark, i) * m_scales[m_instances[a].scale_step];
+          for(std::size_t c = 0; c < candidates[a].size(); ++c) {
+            const std::size_t v = candidates[a][c].first;
+            const auto it = std::lower_bound(entries.begin(), entries.end(),
+                                             std::make_pair(v, -std::numeric_limits<double>::infinity()));
+            const double d = it != entries.end() && it->first == v ? it->second : reach;
+            squares[a][c].second += (d - want) * (d - want);
+          }
+        }
+      },
+      solver_parameters(reach));
+    for(std::size_t a = 1; a < m_instances.size(); ++a) {
+      const double size = m_size * m_scales[m_instances[a].scale_step];
+      const double mapped = double(std::max<std::size_t>(1, m_instances[a].correspondence.mapped));
+      for(auto& entry : squares[a])
+        entry.second = std::sqrt(entry.second / mapped) / size;
+    }
+    return squares;
   }
 
   std::vector<Detected_instance> collect_instances() const
