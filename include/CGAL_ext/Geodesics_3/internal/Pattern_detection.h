@@ -749,6 +749,8 @@ private:
     const double signature_radius = m_settings.signature_radius * m_size;
     const std::vector<double>& target = m_patch_signature[m_landmark];
     const std::size_t n = m_instances.size();
+    if(n < 2)
+      return;
     const std::vector<Row> residual = distance_residuals();
     const auto residual_of = [&](std::size_t a, std::size_t v) {
       const auto it = std::lower_bound(residual[a].begin(), residual[a].end(),
