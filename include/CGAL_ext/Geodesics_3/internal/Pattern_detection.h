@@ -387,6 +387,7 @@ private:
   void compute_signatures()
   {
     set_scales();
+    compute_patch_distances();
     m_curvature = vertex_principal_curvatures(m_tm, m_vpm, m_vim, parallel && m_settings.threads != 1);
     m_area = vertex_areas(m_tm, m_vpm, m_vim);
     const std::vector<Principal_curvatures>& curvature = m_curvature;
@@ -397,9 +398,9 @@ private:
     const double band = smallest / (4.0 * m_settings.signature_rings);
     m_band_width = band;
     const std::size_t bands = std::size_t(std::ceil(largest / band)) + 1;
-    // pairs of samples farther than any pair of the patch at the largest scale, with 10 % to
-    // spare, cannot be consistent above the cut-off: they are not kept
-    m_pair_radius = 2.2 * m_radius * std::max(1.0, m_scales.back());
+    // pairs of samples within the signature's disk: the consistency terms count the pairs of
+    // patch samples whose images would lie that near (`linked`)
+    m_pair_radius = largest;
     const double row_radius = std::max(m_pair_radius, largest);
     const std::size_t n = m_sample_vertex.size();
     m_rings.assign(n, Ring_sums(bands, band));
@@ -446,9 +447,34 @@ private:
     return it != row.end() && it->first == b ? it->second : std::numeric_limits<double>::infinity();
   }
 
-  double patch_distance(std::size_t i, std::size_t j) const
+  double patch_distance(std::size_t i, std::size_t j) const { return m_patch_distance[i * m_patch_sample.size() + j]; }
+
+  // Pairs of patch samples whose images, if consistent at any scale of the range, lie within
+  // the sample rows' radius: the pairs the consistency terms count.
+  bool linked(std::size_t i, std::size_t j) const
   {
-    return sample_distance(m_patch_sample[i], m_patch_sample[j]);
+    return i != j && patch_distance(i, j) * m_scales.back() <= m_settings.consistency_cutoff * m_pair_radius;
+  }
+
+  // The exact distances among the patch samples (one row each, within the patch's diameter).
+  void compute_patch_distances()
+  {
+    const std::size_t k = m_patch_sample.size();
+    m_patch_distance.assign(k * k, std::numeric_limits<double>::infinity());
+    std::vector<std::size_t> index(m_sample_vertex.size(), none);
+    std::vector<vertex_descriptor> sources;
+    for(std::size_t i = 0; i < k; ++i) {
+      index[m_patch_sample[i]] = i;
+      sources.push_back(m_vertex[m_sample_vertex[m_patch_sample[i]]]);
+    }
+    geodesic_sparse_distance_rows<Concurrency>(
+      m_tm, sources,
+      [&](std::size_t i, const Row& entries) {
+        for(const auto& [v, d] : entries)
+          if(m_sample_of_vertex[v] != none && index[m_sample_of_vertex[v]] != none)
+            m_patch_distance[i * k + index[m_sample_of_vertex[v]]] = d;
+      },
+      solver_parameters(2.01 * m_radius));
   }
 
   double signature_cost(std::size_t i, std::size_t scale_step, std::size_t q) const
@@ -607,7 +633,10 @@ private:
 
     start = Clock::now();
     const std::vector<std::vector<std::size_t>> clusters = cluster_matches(
-      matches, [&](std::size_t i, std::size_t j) { return patch_distance(i, j); },
+      matches,
+      [&](std::size_t i, std::size_t j) {
+        return linked(i, j) ? patch_distance(i, j) : std::numeric_limits<double>::infinity();
+      },
       [&](std::size_t a, std::size_t b) { return sample_distance(a, b); }, m_settings.consistency_cutoff, m_spacing,
       k);
     m_times->clusters += clusters.size();
@@ -652,7 +681,7 @@ private:
       for(std::size_t b = 0; b < cluster.size(); ++b) {
         const Pattern_match& ma = matches[cluster[a]];
         const Pattern_match& mb = matches[cluster[b]];
-        if(ma.patch_sample != mb.patch_sample && ma.sample != mb.sample)
+        if(ma.patch_sample != mb.patch_sample && ma.sample != mb.sample && linked(ma.patch_sample, mb.patch_sample))
           support[a] += match_consistency(patch_distance(ma.patch_sample, mb.patch_sample),
                                           sample_distance(ma.sample, mb.sample), scale, scale, m_spacing);
       }
@@ -682,6 +711,7 @@ private:
     const std::size_t step = instance.scale_step;
     terms.signature_cost = [this, step](std::size_t i, std::size_t q) { return signature_cost(i, step, q); };
     terms.patch_distance = [this](std::size_t i, std::size_t j) { return patch_distance(i, j); };
+    terms.linked = [this](std::size_t i, std::size_t j) { return linked(i, j); };
     terms.sample_distance = [this](std::size_t a, std::size_t b) { return sample_distance(a, b); };
     const Pattern_energy energy(terms);
     std::vector<bool> taken_now(m_sample_vertex.size(), false);
@@ -699,24 +729,25 @@ private:
       for(const auto& [q, d] : m_near[first.image[m_landmark]]) {
         if(d > step_length || !usable(q))
           continue;
-        Pattern_correspondence other = correspondence_around(q, energy, near, usable);
+        Pattern_correspondence other = correspondence_around(q, energy, near, usable, step_length);
         refine_correspondence(other, energy, near, usable, step_length);
         if(other.energy < c.energy)
           c = other;
       }
     }
 
-    // accept a correspondence that maps the landmark and at least half of the samples, whose
+    // accept a correspondence that maps the landmark and at least two thirds of the samples, whose
     // mapped pairs keep their distances (above the cut-off on average) and whose landmark looks
     // like the patch's centre (within twice the match tolerance: the landmark's image is a
     // sample, up to a spacing from where the centre maps)
-    if(c.image[m_landmark] == Pattern_correspondence::unmapped || 2 * c.mapped < k)
+    if(c.image[m_landmark] == Pattern_correspondence::unmapped || 3 * c.mapped < 2 * k)
       return false;
     double consistent = 0;
     std::size_t pairs = 0;
     for(std::size_t i = 0; i < k; ++i)
       for(std::size_t j = i + 1; j < k; ++j)
-        if(c.image[i] != Pattern_correspondence::unmapped && c.image[j] != Pattern_correspondence::unmapped) {
+        if(c.image[i] != Pattern_correspondence::unmapped && c.image[j] != Pattern_correspondence::unmapped &&
+           linked(i, j)) {
           consistent += energy.consistency(i, c.image[i], j, c.image[j]);
           ++pairs;
         }
@@ -726,10 +757,18 @@ private:
       return false;
     instance.center_sample = c.image[m_landmark];
     instance.center_vertex = m_sample_vertex[instance.center_sample];
-    // a new instance: its centre is farther than the mean of the two radii from every other's
+    // a new instance: its centre is farther than the mean of the two sizes from every other's
+    // centre, and farther than 1.5 spacings from every other's images (an elongated instance's
+    // centre may be farther than its size from a shifted copy of itself, not from its samples)
     const auto overlaps = [&](const Instance& other) {
       const double other_scale = other.scale_step == none ? 1.0 : m_scales[other.scale_step];
-      return sample_distance(instance.center_sample, other.center_sample) < 0.5 * (scale + other_scale) * m_size;
+      if(sample_distance(instance.center_sample, other.center_sample) < 0.5 * (scale + other_scale) * m_size)
+        return true;
+      for(std::size_t q : other.correspondence.image)
+        if(q != Pattern_correspondence::unmapped &&
+           sample_distance(instance.center_sample, q) < 1.5 * m_spacing * std::min(scale, other_scale))
+          return true;
+      return false;
     };
     return std::none_of(m_instances.begin(), m_instances.end(), overlaps) &&
            std::none_of(found_now.begin(), found_now.end(), overlaps);
@@ -738,59 +777,43 @@ private:
   // Each instance's centre: from the landmark's image (a sample, up to a spacing away from
   // where the patch's centre maps), a descent over the vertices within two spacings of it to
   // the one whose own signature is most like the patch centre's and whose distances to the
-  // images of the other patch samples best agree with the patch's (the root mean square of
-  // the differences, relative to the patch's size): the signature alone hardly changes along
-  // the axis of an elongated instance, the distances alone are off by up to a spacing each.
-  // Every step evaluates the unvisited vertices of the two rings around the current vertex of
-  // every instance still moving, in one batch of local rows.
+  // images of the patch samples best agree with the patch centre's distances to them (the
+  // root mean square of the differences, relative to the patch's size): the signature alone
+  // hardly changes along the axis of an elongated instance, the distances alone are off by up
+  // to a spacing each. Every step evaluates the unvisited vertices of the two rings around the
+  // current vertex of every instance still moving, one local row each, in one batch; a row
+  // gives both the signature and the distances.
   void place_centres()
   {
+    const std::size_t n = m_instances.size();
+    const std::size_t k = m_patch_sample.size();
+    if(n < 2)
+      return;
     const int rings = m_settings.signature_rings;
     const double signature_radius = m_settings.signature_radius * m_size;
     const std::vector<double>& target = m_patch_signature[m_landmark];
-    const std::size_t n = m_instances.size();
-    if(n < 2)
-      return;
-    const std::vector<Row> residual = distance_residuals();
-    const auto residual_of = [&](std::size_t a, std::size_t v) {
-      const auto it = std::lower_bound(residual[a].begin(), residual[a].end(),
-                                       std::make_pair(v, -std::numeric_limits<double>::infinity()));
-      return it != residual[a].end() && it->first == v ? it->second : std::numeric_limits<double>::infinity();
-    };
-    std::vector<double> cost(n, 0.0);
+    double farthest = 0;
+    for(std::size_t i = 0; i < k; ++i)
+      farthest = std::max(farthest, patch_distance(m_landmark, i));
+    const double reach = std::max(signature_radius, farthest + 3 * m_spacing) * m_scales.back();
+
+    std::vector<double> cost(n, std::numeric_limits<double>::infinity());
     std::vector<bool> moving(n, false);
     std::vector<std::vector<std::size_t>> visited(n);
+    std::vector<Row> allowed(n); // the vertices within two spacings of the landmark's image
+    std::vector<std::pair<std::size_t, std::size_t>> tried; // (instance, vertex)
     for(std::size_t a = 1; a < n; ++a) {
       moving[a] = true;
-      cost[a] = signature_cost(m_landmark, m_instances[a].scale_step, m_instances[a].center_sample) +
-                residual_of(a, m_instances[a].center_vertex);
       visited[a].push_back(m_instances[a].center_vertex);
+      tried.emplace_back(a, m_instances[a].center_vertex);
     }
-    const double largest = signature_radius * m_scales.back();
-    const int max_steps = 1 + int(std::ceil(3 * m_spacing * m_scales.back() / std::max(m_mean_edge, 1e-300)));
-    for(int step = 0; step < max_steps; ++step) {
-      std::vector<std::pair<std::size_t, std::size_t>> tried; // (instance, vertex)
-      for(std::size_t a = 1; a < n; ++a) {
-        if(!moving[a])
-          continue;
-        // the two rings around the current vertex: a step over one shallow dip
-        std::vector<vertex_descriptor> ring;
-        for(vertex_descriptor w : CGAL::vertices_around_target(m_vertex[m_instances[a].center_vertex], m_tm)) {
-          ring.push_back(w);
-          for(vertex_descriptor x : CGAL::vertices_around_target(w, m_tm))
-            ring.push_back(x);
-        }
-        for(vertex_descriptor w : ring) {
-          const std::size_t wi = std::size_t(get(m_vim, w));
-          if(std::find(visited[a].begin(), visited[a].end(), wi) == visited[a].end()) {
-            visited[a].push_back(wi);
-            if(std::isfinite(residual_of(a, wi)))
-              tried.emplace_back(a, wi);
-          }
-        }
-      }
-      if(tried.empty())
-        break;
+    const auto is_allowed = [&](std::size_t a, std::size_t v) {
+      return std::binary_search(allowed[a].begin(), allowed[a].end(),
+                                std::make_pair(v, -std::numeric_limits<double>::infinity()),
+                                [](const auto& x, const auto& y) { return x.first < y.first; });
+    };
+    const int max_steps = 2 + int(std::ceil(3 * m_spacing * m_scales.back() / std::max(m_mean_edge, 1e-300)));
+    for(int step = 0; step < max_steps && !tried.empty(); ++step) {
       std::vector<vertex_descriptor> sources;
       for(const auto& t : tried)
         sources.push_back(m_vertex[t.second]);
@@ -800,86 +823,64 @@ private:
         m_tm, sources,
         [&](std::size_t r, const Row& entries) {
           const std::size_t a = tried[r].first;
-          const double radius = signature_radius * m_scales[m_instances[a].scale_step];
+          const Instance& instance = m_instances[a];
+          const double scale = m_scales[instance.scale_step];
+          if(step == 0)
+            for(const auto& entry : entries)
+              if(entry.second <= 2 * m_spacing * scale)
+                allowed[a].push_back(entry);
+          const double radius = signature_radius * scale;
           Ring_sums sums(m_rings.front().bands(), m_band_width);
           for(const auto& [v, d] : entries)
             if(d < radius)
               sums.add(d, m_area[v], m_curvature[v]);
+          double squares = 0;
+          for(std::size_t i = 0; i < k; ++i) {
+            const std::size_t q = instance.correspondence.image[i];
+            if(q == Pattern_correspondence::unmapped)
+              continue;
+            const auto it = std::lower_bound(entries.begin(), entries.end(),
+                                             std::make_pair(m_sample_vertex[q], -std::numeric_limits<double>::infinity()));
+            const double d = it != entries.end() && it->first == m_sample_vertex[q] ? it->second : reach;
+            const double want = patch_distance(m_landmark, i) * scale;
+            squares += (d - want) * (d - want);
+          }
+          const double mapped = double(std::max<std::size_t>(1, instance.correspondence.mapped));
           const double c = signature_distance(target, sums.signature(radius, rings)) / m_signature_norm +
-                           residual_of(a, tried[r].second);
+                           std::sqrt(squares / mapped) / (m_size * scale);
           if(c < best_cost[a]) {
             best_cost[a] = c;
             best[a] = tried[r].second;
           }
         },
-        solver_parameters(largest));
+        solver_parameters(reach));
+      tried.clear();
       for(std::size_t a = 1; a < n; ++a) {
         if(!moving[a])
           continue;
-        if(best[a] == none)
+        if(best[a] == none) {
           moving[a] = false;
-        else {
-          m_instances[a].center_vertex = best[a];
-          cost[a] = best_cost[a];
-        }
-      }
-    }
-  }
-
-  // For every instance, the vertices within two spacings of its landmark's image, each with the
-  // root mean square difference between its distances to the images of the patch samples and
-  // the patch centre's distances to them (times the scale), relative to the patch's size; from
-  // one local row per image. By vertex index.
-  std::vector<Row> distance_residuals() const
-  {
-    const std::size_t k = m_patch_sample.size();
-    std::vector<std::size_t> sources; // the images, each once, with the instances that use them
-    std::vector<std::vector<std::pair<std::size_t, std::size_t>>> users(m_sample_vertex.size());
-    for(std::size_t a = 1; a < m_instances.size(); ++a)
-      for(std::size_t i = 0; i < k; ++i) {
-        const std::size_t q = m_instances[a].correspondence.image[i];
-        if(q == Pattern_correspondence::unmapped)
           continue;
-        if(users[q].empty())
-          sources.push_back(q);
-        users[q].emplace_back(a, i);
-      }
-    std::vector<Row> candidates(m_instances.size());
-    for(std::size_t a = 1; a < m_instances.size(); ++a)
-      candidates[a] = local_row(m_instances[a].center_vertex, 2 * m_spacing * m_scales[m_instances[a].scale_step]);
-    std::vector<Row> squares = candidates;
-    for(Row& row : squares)
-      for(auto& entry : row)
-        entry.second = 0;
-    double reach = 0;
-    for(std::size_t i = 0; i < k; ++i)
-      reach = std::max(reach, patch_distance(m_landmark, i));
-    reach = (reach + 3 * m_spacing) * m_scales.back();
-    std::vector<vertex_descriptor> source_vertices;
-    for(std::size_t q : sources)
-      source_vertices.push_back(m_vertex[m_sample_vertex[q]]);
-    geodesic_sparse_distance_rows<Concurrency>(
-      m_tm, source_vertices,
-      [&](std::size_t r, const Row& entries) {
-        for(const auto& [a, i] : users[sources[r]]) {
-          const double want = patch_distance(m_landmark, i) * m_scales[m_instances[a].scale_step];
-          for(std::size_t c = 0; c < candidates[a].size(); ++c) {
-            const std::size_t v = candidates[a][c].first;
-            const auto it = std::lower_bound(entries.begin(), entries.end(),
-                                             std::make_pair(v, -std::numeric_limits<double>::infinity()));
-            const double d = it != entries.end() && it->first == v ? it->second : reach;
-            squares[a][c].second += (d - want) * (d - want);
+        }
+        m_instances[a].center_vertex = best[a];
+        cost[a] = best_cost[a];
+        // the two rings around the current vertex: a step over one shallow dip
+        std::vector<vertex_descriptor> ring;
+        for(vertex_descriptor w : CGAL::vertices_around_target(m_vertex[best[a]], m_tm)) {
+          ring.push_back(w);
+          for(vertex_descriptor x : CGAL::vertices_around_target(w, m_tm))
+            ring.push_back(x);
+        }
+        for(vertex_descriptor w : ring) {
+          const std::size_t wi = std::size_t(get(m_vim, w));
+          if(std::find(visited[a].begin(), visited[a].end(), wi) == visited[a].end()) {
+            visited[a].push_back(wi);
+            if(is_allowed(a, wi))
+              tried.emplace_back(a, wi);
           }
         }
-      },
-      solver_parameters(reach));
-    for(std::size_t a = 1; a < m_instances.size(); ++a) {
-      const double size = m_size * m_scales[m_instances[a].scale_step];
-      const double mapped = double(std::max<std::size_t>(1, m_instances[a].correspondence.mapped));
-      for(auto& entry : squares[a])
-        entry.second = std::sqrt(entry.second / mapped) / size;
+      }
     }
-    return squares;
   }
 
   std::vector<Detected_instance> collect_instances() const
@@ -941,6 +942,7 @@ private:
   double m_size = 0;   // the radius of a disk of the patch's area
   double m_spacing = 0;
   double m_pair_radius = 0;
+  std::vector<double> m_patch_distance; // between patch samples, k x k
 
   std::vector<std::size_t> m_sample_vertex;    // by sample
   std::vector<std::size_t> m_sample_of_vertex; // by vertex: its sample, or none

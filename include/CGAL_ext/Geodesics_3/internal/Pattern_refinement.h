@@ -35,6 +35,9 @@ struct Pattern_energy_terms
   /// the signature distance (relative to the patch's signatures) of patch sample i and mesh sample q
   std::function<double(std::size_t, std::size_t)> signature_cost;
   std::function<double(std::size_t, std::size_t)> patch_distance;  ///< between patch samples
+  /// whether a pair of patch samples is near enough that the distance between their images is
+  /// known (the pairs that the consistency terms count)
+  std::function<bool(std::size_t, std::size_t)> linked;
   std::function<double(std::size_t, std::size_t)> sample_distance; ///< between mesh samples
   double scale = 1; ///< instance size over patch size
   double slack = 0; ///< the sampling's spacing (see `match_consistency()`)
@@ -74,11 +77,9 @@ public:
     const std::size_t k = m_terms.patch_samples;
     double inconsistency = 0;
     for(std::size_t j = 0; j < k; ++j)
-      if(j != i)
+      if(j != i && m_terms.linked(i, j))
         inconsistency += 1 - consistency(i, qi, j, image[j]);
-    double e = m_terms.alpha * signature_term(i, qi) / double(k);
-    if(k > 1)
-      e += m_terms.beta * 2 * inconsistency / double(k * (k - 1));
+    double e = m_terms.alpha * signature_term(i, qi) / double(k) + m_terms.beta * inconsistency / linked_pairs();
     if(i == m_terms.landmark)
       e += m_terms.gamma * signature_term(i, qi);
     return e;
@@ -93,18 +94,31 @@ public:
       signature += signature_term(i, c.image[i]);
       c.mapped += c.image[i] != Pattern_correspondence::unmapped;
       for(std::size_t j = i + 1; j < k; ++j)
-        consistent += consistency(i, c.image[i], j, c.image[j]);
+        if(m_terms.linked(i, j))
+          consistent += consistency(i, c.image[i], j, c.image[j]);
     }
-    const double pairs = k > 1 ? double(k * (k - 1) / 2) : 1.0;
-    c.mean_consistency = k > 1 ? consistent / pairs : 1.0;
-    c.energy = m_terms.alpha * signature / double(k) + (k > 1 ? m_terms.beta * (1 - c.mean_consistency) : 0.0) +
+    c.mean_consistency = consistent / linked_pairs();
+    c.energy = m_terms.alpha * signature / double(k) + m_terms.beta * (1 - c.mean_consistency) +
                m_terms.gamma * signature_term(m_terms.landmark, c.image[m_terms.landmark]);
+  }
+
+  /// the number of linked pairs (at least 1)
+  double linked_pairs() const
+  {
+    if(m_linked_pairs == 0) {
+      for(std::size_t i = 0; i < m_terms.patch_samples; ++i)
+        for(std::size_t j = i + 1; j < m_terms.patch_samples; ++j)
+          m_linked_pairs += m_terms.linked(i, j);
+      m_linked_pairs = std::max<std::size_t>(m_linked_pairs, 1);
+    }
+    return double(m_linked_pairs);
   }
 
   const Pattern_energy_terms& terms() const { return m_terms; }
 
 private:
   const Pattern_energy_terms& m_terms;
+  mutable std::size_t m_linked_pairs = 0;
 };
 
 /// Lowers the energy of `c` by moving one image at a time. The moves of patch sample i are to
@@ -153,7 +167,7 @@ inline void refine_correspondence(
         std::size_t anchor = Pattern_correspondence::unmapped;
         double anchor_distance = std::numeric_limits<double>::infinity();
         for(std::size_t j = 0; j < k; ++j)
-          if(c.image[j] != Pattern_correspondence::unmapped && t.patch_distance(i, j) < anchor_distance) {
+          if(c.image[j] != Pattern_correspondence::unmapped && t.linked(i, j) && t.patch_distance(i, j) < anchor_distance) {
             anchor = j;
             anchor_distance = t.patch_distance(i, j);
           }
@@ -177,13 +191,14 @@ inline void refine_correspondence(
 }
 
 /// A correspondence built around a given image of the landmark: the other patch samples, the
-/// nearest to the landmark first, each take the usable mesh sample near it that lowers the energy
-/// most given the images chosen so far. Moving single images cannot shift a whole
-/// correspondence (on a flat region a shifted one keeps every distance), this can.
+/// nearest to the landmark first, each take, among the usable mesh samples at about its patch
+/// distance (within `step`) from the image of its nearest mapped (linked) patch sample, the one
+/// that lowers the energy most given the images chosen so far. Moving single images cannot
+/// shift a whole correspondence (on a flat region a shifted one keeps every distance), this can.
 inline Pattern_correspondence correspondence_around(
   std::size_t landmark_image, const Pattern_energy& energy,
   const std::function<const std::vector<std::pair<std::size_t, double>>&(std::size_t)>& neighbours,
-  const std::function<bool(std::size_t)>& usable)
+  const std::function<bool(std::size_t)>& usable, double step)
 {
   const Pattern_energy_terms& t = energy.terms();
   const std::size_t k = t.patch_samples;
@@ -199,9 +214,17 @@ inline Pattern_correspondence correspondence_around(
   });
   std::vector<std::size_t> used{landmark_image};
   for(std::size_t i : order) {
+    std::size_t anchor = Pattern_correspondence::unmapped;
+    for(std::size_t j = 0; j < k; ++j)
+      if(c.image[j] != Pattern_correspondence::unmapped && t.linked(i, j) &&
+         (anchor == Pattern_correspondence::unmapped || t.patch_distance(i, j) < t.patch_distance(i, anchor)))
+        anchor = j;
+    if(anchor == Pattern_correspondence::unmapped)
+      continue;
+    const double want = t.patch_distance(i, anchor) * t.scale;
     double best = energy.local(c.image, i, Pattern_correspondence::unmapped);
-    for(const auto& [q, d] : neighbours(landmark_image)) {
-      if(!usable(q) || std::find(used.begin(), used.end(), q) != used.end())
+    for(const auto& [q, d] : neighbours(c.image[anchor])) {
+      if(std::abs(d - want) > step || !usable(q) || std::find(used.begin(), used.end(), q) != used.end())
         continue;
       const double e = energy.local(c.image, i, q);
       if(e < best - 1e-12) {
