@@ -777,12 +777,12 @@ private:
   // Each instance's centre: from the landmark's image (a sample, up to a spacing away from
   // where the patch's centre maps), a descent over the vertices within two spacings of it to
   // the one whose own signature is most like the patch centre's and whose distances to the
-  // images of the patch samples best agree with the patch centre's distances to them (the
-  // root mean square of the differences, relative to the patch's size): the signature alone
-  // hardly changes along the axis of an elongated instance, the distances alone are off by up
-  // to a spacing each. Every step evaluates the unvisited vertices of the two rings around the
-  // current vertex of every instance still moving, one local row each, in one batch; a row
-  // gives both the signature and the distances.
+  // images of the patch samples best agree with the patch centre's distances to them (the root
+  // mean square of the differences over the images within a row, relative to the patch's
+  // size): the signature alone hardly changes along the axis of an elongated instance, the
+  // distances alone are off by up to a spacing each. Every step evaluates the unvisited
+  // neighbours of the current vertex of every instance still moving, one local row each, in
+  // one batch; a row gives both the signature and the distances.
   void place_centres()
   {
     const std::size_t n = m_instances.size();
@@ -792,10 +792,9 @@ private:
     const int rings = m_settings.signature_rings;
     const double signature_radius = m_settings.signature_radius * m_size;
     const std::vector<double>& target = m_patch_signature[m_landmark];
-    double farthest = 0;
-    for(std::size_t i = 0; i < k; ++i)
-      farthest = std::max(farthest, patch_distance(m_landmark, i));
-    const double reach = std::max(signature_radius, farthest + 3 * m_spacing) * m_scales.back();
+    // the images as far as the patch's farthest samples, with a spacing to spare (for an
+    // elongated patch, those along its axis, beyond the signature's disk, tell the most)
+    const double reach = std::max(signature_radius, m_radius + m_spacing) * m_scales.back();
 
     std::vector<double> cost(n, std::numeric_limits<double>::infinity());
     std::vector<bool> moving(n, false);
@@ -835,19 +834,21 @@ private:
             if(d < radius)
               sums.add(d, m_area[v], m_curvature[v]);
           double squares = 0;
+          std::size_t counted = 0;
           for(std::size_t i = 0; i < k; ++i) {
             const std::size_t q = instance.correspondence.image[i];
             if(q == Pattern_correspondence::unmapped)
               continue;
             const auto it = std::lower_bound(entries.begin(), entries.end(),
                                              std::make_pair(m_sample_vertex[q], -std::numeric_limits<double>::infinity()));
-            const double d = it != entries.end() && it->first == m_sample_vertex[q] ? it->second : reach;
+            if(it == entries.end() || it->first != m_sample_vertex[q])
+              continue;
             const double want = patch_distance(m_landmark, i) * scale;
-            squares += (d - want) * (d - want);
+            squares += (it->second - want) * (it->second - want);
+            ++counted;
           }
-          const double mapped = double(std::max<std::size_t>(1, instance.correspondence.mapped));
           const double c = signature_distance(target, sums.signature(radius, rings)) / m_signature_norm +
-                           std::sqrt(squares / mapped) / (m_size * scale);
+                           (counted ? std::sqrt(squares / double(counted)) / (m_size * scale) : 0.0);
           if(c < best_cost[a]) {
             best_cost[a] = c;
             best[a] = tried[r].second;
@@ -864,14 +865,7 @@ private:
         }
         m_instances[a].center_vertex = best[a];
         cost[a] = best_cost[a];
-        // the two rings around the current vertex: a step over one shallow dip
-        std::vector<vertex_descriptor> ring;
         for(vertex_descriptor w : CGAL::vertices_around_target(m_vertex[best[a]], m_tm)) {
-          ring.push_back(w);
-          for(vertex_descriptor x : CGAL::vertices_around_target(w, m_tm))
-            ring.push_back(x);
-        }
-        for(vertex_descriptor w : ring) {
           const std::size_t wi = std::size_t(get(m_vim, w));
           if(std::find(visited[a].begin(), visited[a].end(), wi) == visited[a].end()) {
             visited[a].push_back(wi);
