@@ -109,8 +109,12 @@ struct Repetitive_patterns
 /// the dual of the geodesic Voronoi diagram of the centres. Instances need not be regular,
 /// equally spaced, isotropic or, with `scale_range`, of the patch's size.
 ///
-/// Lengths of the named parameters are relative to the patch radius (the largest geodesic
-/// distance from the patch's centre to its vertices).
+/// The sample spacing and the signature radius are relative to the patch's size (the radius of
+/// a disk of its area: its radius for a geodesic disk, less for an elongated patch, whose samples
+/// then follow its width); the search radius is relative to the patch radius (the largest
+/// geodesic distance from the patch's centre to its vertices). The centre of a vertex-list patch
+/// is the midpoint of its medial axis (the landmark of the thesis). Instance centres are vertices;
+/// the correspondence maps the patch's samples to samples (to within about a spacing).
 ///
 /// \tparam ConcurrencyTag `CGAL::Sequential_tag` (the default), `CGAL::Parallel_tag` or
 ///         `CGAL::Parallel_if_available_tag`: the propagations and curvatures on TBB threads
@@ -123,11 +127,11 @@ struct Repetitive_patterns
 ///
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{sample_spacing}
-///     \cgalParamDescription{the covering radius of the farthest-point sampling}
+///     \cgalParamDescription{the covering radius of the farthest-point sampling, relative to the patch's size}
 ///     \cgalParamType{`double`, positive} \cgalParamDefault{`1/3`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{signature_radius}
-///     \cgalParamDescription{the radius of the geodesic disk of a signature}
+///     \cgalParamDescription{the radius of the geodesic disk of a signature, relative to the patch's size}
 ///     \cgalParamType{`double`, positive} \cgalParamDefault{`1`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{signature_rings}

@@ -558,8 +558,8 @@ private:
     }
   }
 
-  // Free samples whose signature is within twice the tolerance of the landmark's (as for accepting
-  // an instance), the most alike first.
+  // Free samples whose signature is within three times the tolerance of the landmark's (its
+  // nearest sample may be a spacing off an instance's centre), the most alike first.
   std::vector<std::size_t> landmark_lookalikes() const
   {
     std::vector<std::pair<double, std::size_t>> alike;
@@ -569,7 +569,7 @@ private:
       double cost = std::numeric_limits<double>::infinity();
       for(std::size_t step = 0; step < m_scales.size(); ++step)
         cost = std::min(cost, signature_cost(m_landmark, step, q));
-      if(cost <= 2 * m_settings.match_tolerance)
+      if(cost <= 3 * m_settings.match_tolerance)
         alike.emplace_back(cost, q);
     }
     std::sort(alike.begin(), alike.end());
@@ -708,8 +708,8 @@ private:
     terms.gamma = m_settings.gamma;
     terms.scale = scale;
     terms.slack = m_spacing;
-    const std::size_t step = instance.scale_step;
-    terms.signature_cost = [this, step](std::size_t i, std::size_t q) { return signature_cost(i, step, q); };
+    std::size_t step = instance.scale_step;
+    terms.signature_cost = [this, &step](std::size_t i, std::size_t q) { return signature_cost(i, step, q); };
     terms.patch_distance = [this](std::size_t i, std::size_t j) { return patch_distance(i, j); };
     terms.linked = [this](std::size_t i, std::size_t j) { return linked(i, j); };
     terms.sample_distance = [this](std::size_t a, std::size_t b) { return sample_distance(a, b); };
@@ -735,13 +735,34 @@ private:
           c = other;
       }
     }
+    // the scale of the correspondence: the median of its matches' is a start; the scales near it
+    // are tried on the refined correspondence and the one of lowest energy kept
+    if(m_scales.size() > 1) {
+      const std::size_t first = step;
+      double lowest = c.energy;
+      for(std::size_t t = first > 3 ? first - 3 : 0; t < std::min(m_scales.size(), first + 4); ++t) {
+        step = t;
+        terms.scale = m_scales[t];
+        Pattern_correspondence at = c;
+        energy.evaluate(at);
+        if(at.energy < lowest) {
+          lowest = at.energy;
+          instance.scale_step = t;
+        }
+      }
+      step = instance.scale_step;
+      terms.scale = m_scales[step];
+      refine_correspondence(c, energy, near, usable, 2 * m_spacing * terms.scale);
+    }
 
     // accept a correspondence that maps the landmark and at least two thirds of the samples, whose
-    // mapped pairs keep their distances (above the cut-off on average) and whose landmark looks
+    // mapped pairs keep their distances (on average to 0.85 of the cut-off: the pairs of a true
+    // instance on an anisotropic triangulation fall a little short of it) and whose landmark looks
     // like the patch's centre (within twice the match tolerance: the landmark's image is a
     // sample, up to a spacing from where the centre maps)
     if(c.image[m_landmark] == Pattern_correspondence::unmapped || 3 * c.mapped < 2 * k)
       return false;
+    constexpr double acceptance = 0.85;
     double consistent = 0;
     std::size_t pairs = 0;
     for(std::size_t i = 0; i < k; ++i)
@@ -751,7 +772,7 @@ private:
           consistent += energy.consistency(i, c.image[i], j, c.image[j]);
           ++pairs;
         }
-    if(pairs == 0 || consistent / double(pairs) < m_settings.consistency_cutoff)
+    if(pairs == 0 || consistent / double(pairs) < acceptance * m_settings.consistency_cutoff)
       return false;
     if(signature_cost(m_landmark, step, c.image[m_landmark]) > 2 * m_settings.match_tolerance)
       return false;
@@ -760,7 +781,9 @@ private:
     // a new instance: its centre is farther than the mean of the two sizes from every other's
     // centre, and farther than 1.5 spacings from every other's images (an elongated instance's
     // centre may be farther than its size from a shifted copy of itself, not from its samples)
+    const double scale_found = m_scales[instance.scale_step];
     const auto overlaps = [&](const Instance& other) {
+      const double scale = scale_found;
       const double other_scale = other.scale_step == none ? 1.0 : m_scales[other.scale_step];
       if(sample_distance(instance.center_sample, other.center_sample) < 0.5 * (scale + other_scale) * m_size)
         return true;
