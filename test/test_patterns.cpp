@@ -267,3 +267,23 @@ TEST(Pattern_detection, Same_instances_for_1_2_and_4_threads)
   EXPECT_EQ(centres[0], centres[1]);
   EXPECT_EQ(centres[0], centres[2]);
 }
+
+// Real meshes of CGAL's data set (no planted instances): the pipeline runs through, the marked
+// patch comes first, every instance is a vertex of the mesh with members and a correspondence.
+TEST(Pattern_detection, Runs_on_real_meshes)
+{
+  for(const std::string name : {"elephant", "knot1", "fandisk"}) {
+    const Mesh& m = test_mesh(name);
+    const Vertex centre = spread_vertices(m, 3)[1];
+    const auto found = CGAL_ext::detect_repetitive_patterns<CGAL::Parallel_if_available_tag>(
+      m, CGAL_ext::Pattern_patch<Mesh>::disk(centre, 0.04 * bbox_diagonal(m)));
+    ASSERT_FALSE(found.instances.empty()) << name;
+    EXPECT_EQ(found.instances.front().center_vertex, centre) << name;
+    for(const auto& instance : found.instances) {
+      EXPECT_TRUE(m.is_valid(instance.center_vertex)) << name;
+      EXPECT_FALSE(instance.vertices.empty()) << name;
+      EXPECT_FALSE(instance.correspondence.empty()) << name;
+    }
+    std::cout << name << ": " << found.instances.size() << " instances, " << found.statistics.samples << " samples\n";
+  }
+}
