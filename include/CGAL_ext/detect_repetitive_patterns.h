@@ -6,6 +6,7 @@
 /// Repetitive pattern detection from one marked instance (thesis chapter 5).
 
 #include <CGAL_ext/Geodesics_3/Geodesic_error.h>
+#include <CGAL_ext/Geodesics_3/Geodesic_statistics.h>
 #include <CGAL_ext/Geodesics_3/Named_function_parameters.h>
 #include <CGAL_ext/Geodesics_3/internal/Pattern_detection.h>
 
@@ -64,20 +65,6 @@ struct Pattern_instance
   std::vector<vertex_descriptor> vertices; ///< its vertices
   /// the sample correspondence: (a sample of the patch, its image in this instance)
   std::vector<std::pair<vertex_descriptor, vertex_descriptor>> correspondence;
-};
-
-/// \ingroup PkgGeodesics3Ref
-/// The time of each step of `detect_repetitive_patterns()` and what it counted.
-struct Pattern_statistics
-{
-  double sampling_seconds = 0, signature_seconds = 0, matching_seconds = 0, clustering_seconds = 0,
-         optimization_seconds = 0, arrangement_seconds = 0;
-  std::size_t samples = 0;       ///< farthest-point samples of the mesh
-  std::size_t patch_samples = 0; ///< of them in the patch
-  std::size_t matches = 0;       ///< candidate matches, summed over the searches
-  std::size_t clusters = 0;      ///< candidate instances, summed over the searches
-  std::size_t searches = 0;      ///< rounds of region growing
-  double patch_radius = 0;       ///< the largest distance from the patch's centre to its vertices
 };
 
 /// \ingroup PkgGeodesics3Ref
@@ -251,20 +238,7 @@ detect_repetitive_patterns(const TriangleMesh& tm, const Pattern_patch<TriangleM
   }
   result.arrangement_edges = found.arrangement_edges;
   result.arrangement_triangles = found.arrangement_triangles;
-  const internal::Pattern_step_times& t = found.times;
-  Pattern_statistics& st = result.statistics;
-  st.sampling_seconds = t.sampling;
-  st.signature_seconds = t.signatures;
-  st.matching_seconds = t.matching;
-  st.clustering_seconds = t.clustering;
-  st.optimization_seconds = t.optimization;
-  st.arrangement_seconds = t.arrangement;
-  st.samples = t.samples;
-  st.patch_samples = t.patch_samples;
-  st.matches = t.matches;
-  st.clusters = t.clusters;
-  st.searches = t.rounds;
-  st.patch_radius = t.patch_radius;
+  result.statistics = found.statistics;
   return result;
 }
 

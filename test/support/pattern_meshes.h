@@ -244,23 +244,32 @@ struct Pattern_scene
   std::pair<double, double> scales{1.0, 1.0};
 };
 
-/// Round bumps of `radius` (height 0.4 radius) laid out irregularly on the unit square, an
-/// n x n grid, vertices moved at random by `noise` edge lengths; the first bump is marked.
-inline Pattern_scene round_bumps_on_a_plane(int n, int count, double radius, unsigned seed, double noise)
+/// `bumps` of `height` times their radius on the unit square, an n x n grid, vertices moved at
+/// random by `noise` edge lengths; the truth radius of a bump is its (short) radius. The first
+/// bump is marked as a disk.
+inline Pattern_scene bumps_on_a_plane(int n, const std::vector<Planted>& bumps, double height, unsigned seed,
+                                      double noise)
 {
   Pattern_scene scene;
   const double h = 1.0 / (n - 1);
-  const std::vector<Planted> bumps = irregular_layout(count, 1.2 * radius, 1 - 1.2 * radius, 1.2 * radius,
-                                                      1 - 1.2 * radius, 2.5 * radius, radius, seed);
-  scene.mesh = bumpy_plane(n, h, bumps, 0.4);
+  scene.mesh = bumpy_plane(n, h, bumps, height);
   add_noise(scene.mesh, noise * h, seed + 1);
   for(const Planted& b : bumps) {
-    scene.truth.centres.push_back(Point(b.x, b.y, 0.4 * radius));
-    scene.truth.radii.push_back(radius);
+    scene.truth.centres.push_back(Point(b.x, b.y, height * b.radius));
+    scene.truth.radii.push_back(b.radius);
   }
   scene.patch_centre = nearest_vertex(scene.mesh, scene.truth.centres[0]);
-  scene.patch_radius = radius;
+  scene.patch_radius = bumps[0].radius;
   return scene;
+}
+
+/// Round bumps of `radius` (height 0.4 radius) laid out irregularly on the unit square.
+inline Pattern_scene round_bumps_on_a_plane(int n, int count, double radius, unsigned seed, double noise)
+{
+  return bumps_on_a_plane(n,
+                          irregular_layout(count, 1.2 * radius, 1 - 1.2 * radius, 1.2 * radius, 1 - 1.2 * radius,
+                                           2.5 * radius, radius, seed),
+                          0.4, seed, noise);
 }
 
 /// A golf ball: `count` dimples of angular radius `angle` spread by the golden angle over a
@@ -303,8 +312,6 @@ inline Pattern_scene bumps_around_a_cylinder(int segments, int rows, int count, 
 /// square; the first is marked by its vertices. Its truth radius is the short semi-axis.
 inline Pattern_scene elongated_bumps_on_a_plane(int n, int count, double radius, unsigned seed, double noise)
 {
-  Pattern_scene scene;
-  const double h = 1.0 / (n - 1);
   std::vector<Planted> bumps = irregular_layout(count, 2.4 * radius, 1 - 2.4 * radius, 2.4 * radius,
                                                 1 - 2.4 * radius, 4.6 * radius, radius, seed);
   std::mt19937 rng(seed + 2);
@@ -313,12 +320,8 @@ inline Pattern_scene elongated_bumps_on_a_plane(int n, int count, double radius,
     b.stretch = 2;
     b.angle = turn(rng);
   }
-  scene.mesh = bumpy_plane(n, h, bumps, 0.5);
-  add_noise(scene.mesh, noise * h, seed + 1);
-  for(const Planted& b : bumps) {
-    scene.truth.centres.push_back(Point(b.x, b.y, 0.5 * radius));
-    scene.truth.radii.push_back(radius);
-  }
+  Pattern_scene scene = bumps_on_a_plane(n, bumps, 0.5, seed, noise);
+  scene.patch_radius = 0;
   for(Vertex v : scene.mesh.vertices())
     if(bump_profile(bumps[0], scene.mesh.point(v).x(), scene.mesh.point(v).y()) > 0)
       scene.patch_vertices.push_back(v);
@@ -329,20 +332,11 @@ inline Pattern_scene elongated_bumps_on_a_plane(int n, int count, double radius,
 /// 1 is marked and the scale range is 0.6:1.6.
 inline Pattern_scene bumps_of_three_sizes_on_a_plane(int n, int count, double radius, unsigned seed, double noise)
 {
-  Pattern_scene scene;
-  const double h = 1.0 / (n - 1);
   std::vector<Planted> bumps = irregular_layout(count, 1.6 * radius, 1 - 1.6 * radius, 1.6 * radius,
                                                 1 - 1.6 * radius, 3.4 * radius, radius, seed);
   for(std::size_t i = 0; i < bumps.size(); ++i)
     bumps[i].radius = radius * (i % 3 == 0 ? 1.0 : i % 3 == 1 ? 0.75 : 1.4);
-  scene.mesh = bumpy_plane(n, h, bumps, 0.4);
-  add_noise(scene.mesh, noise * h, seed + 1);
-  for(const Planted& b : bumps) {
-    scene.truth.centres.push_back(Point(b.x, b.y, 0.4 * b.radius));
-    scene.truth.radii.push_back(b.radius);
-  }
-  scene.patch_centre = nearest_vertex(scene.mesh, scene.truth.centres[0]);
-  scene.patch_radius = radius;
+  Pattern_scene scene = bumps_on_a_plane(n, bumps, 0.4, seed, noise);
   scene.scales = {0.6, 1.6};
   return scene;
 }

@@ -34,6 +34,24 @@ struct Geodesic_statistics
   double seconds_pushing = 0;        ///< PMMP: queue and vertex updates after clipping
 };
 
+/// \ingroup PkgGeodesics3Ref
+/// The time of each step of `detect_repetitive_patterns()` and what it counted.
+struct Pattern_statistics
+{
+  double sampling_seconds = 0;     ///< farthest-point sampling
+  double signature_seconds = 0;    ///< curvatures, signatures and the distances between samples
+  double matching_seconds = 0;     ///< candidate matches
+  double clustering_seconds = 0;   ///< spectral embedding and mean shift
+  double optimization_seconds = 0; ///< refinement of correspondences and placement of centres
+  double arrangement_seconds = 0;  ///< the Voronoi diagram of the centres
+  std::size_t samples = 0;         ///< farthest-point samples of the mesh
+  std::size_t patch_samples = 0;   ///< of them in the patch
+  std::size_t matches = 0;         ///< candidate matches, summed over the searches
+  std::size_t clusters = 0;        ///< candidate instances, summed over the searches
+  std::size_t searches = 0;        ///< rounds of region growing
+  double patch_radius = 0;         ///< the largest distance from the patch's centre to its vertices
+};
+
 } // namespace CGAL_ext
 
 #endif // CGAL_EXT_GEODESICS_3_GEODESIC_STATISTICS_H

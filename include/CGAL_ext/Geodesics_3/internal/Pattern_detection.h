@@ -14,6 +14,7 @@
 // (Algorithm 7), the centre of each instance and the arrangement.
 
 #include <CGAL_ext/Geodesics_3/Geodesic_error.h>
+#include <CGAL_ext/Geodesics_3/Geodesic_statistics.h>
 #include <CGAL_ext/Geodesics_3/internal/Pattern_curvature.h>
 #include <CGAL_ext/Geodesics_3/internal/Pattern_refinement.h>
 #include <CGAL_ext/Geodesics_3/internal/Pattern_signatures.h>
@@ -64,13 +65,6 @@ struct Pattern_patch_indices
   std::vector<std::size_t> vertices;    ///< a vertex list (when not a disk)
 };
 
-struct Pattern_step_times
-{
-  double sampling = 0, signatures = 0, matching = 0, clustering = 0, optimization = 0, arrangement = 0;
-  std::size_t samples = 0, patch_samples = 0, matches = 0, clusters = 0, rounds = 0;
-  double patch_radius = 0;
-};
-
 struct Detected_instance
 {
   std::size_t center = 0; ///< vertex index
@@ -86,7 +80,7 @@ struct Detection_result
   std::vector<Detected_instance> instances; ///< the marked patch first
   std::vector<std::pair<std::size_t, std::size_t>> arrangement_edges;
   std::vector<std::array<std::size_t, 3>> arrangement_triangles;
-  Pattern_step_times times;
+  Pattern_statistics statistics;
 };
 
 template <bool parallel, class TriangleMesh, class VertexPointMap, class VertexIndexMap>
@@ -111,22 +105,22 @@ public:
   Detection_result run(const Pattern_patch_indices& patch)
   {
     Detection_result result;
-    m_times = &result.times;
+    m_times = &result.statistics;
     auto start = Clock::now();
     set_patch(patch);
     sample();
-    m_times->sampling = seconds_since(start);
+    m_times->sampling_seconds = seconds_since(start);
     start = Clock::now();
     compute_signatures();
-    m_times->signatures = seconds_since(start);
+    m_times->signature_seconds = seconds_since(start);
     grow_regions();
     start = Clock::now();
     place_centres();
-    m_times->optimization += seconds_since(start);
+    m_times->optimization_seconds += seconds_since(start);
     start = Clock::now();
     result.instances = collect_instances();
     arrange(result);
-    m_times->arrangement = seconds_since(start);
+    m_times->arrangement_seconds = seconds_since(start);
     return result;
   }
 
@@ -528,7 +522,7 @@ private:
     std::queue<std::size_t> to_search;
     to_search.push(0);
     const auto search = [&](std::size_t center_sample, double scale) {
-      ++m_times->rounds;
+      ++m_times->searches;
       for(Instance& found : search_around(center_sample, scale)) {
         m_instances.push_back(found);
         for(std::size_t q : found.correspondence.image)
@@ -629,7 +623,7 @@ private:
       matches.insert(matches.end(), mine.begin(), mine.begin() + std::ptrdiff_t(keep));
     }
     m_times->matches += matches.size();
-    m_times->matching += seconds_since(start);
+    m_times->matching_seconds += seconds_since(start);
 
     start = Clock::now();
     const std::vector<std::vector<std::size_t>> clusters = cluster_matches(
@@ -640,7 +634,7 @@ private:
       [&](std::size_t a, std::size_t b) { return sample_distance(a, b); }, m_settings.consistency_cutoff, m_spacing,
       k);
     m_times->clusters += clusters.size();
-    m_times->clustering += seconds_since(start);
+    m_times->clustering_seconds += seconds_since(start);
 
     start = Clock::now();
     std::vector<Instance> found;
@@ -649,7 +643,7 @@ private:
       if(make_instance(matches, cluster, in_neighbourhood, found, instance))
         found.push_back(instance);
     }
-    m_times->optimization += seconds_since(start);
+    m_times->optimization_seconds += seconds_since(start);
     return found;
   }
 
@@ -949,7 +943,7 @@ private:
   VertexPointMap m_vpm;
   VertexIndexMap m_vim;
   Pattern_settings m_settings;
-  Pattern_step_times* m_times = nullptr;
+  Pattern_statistics* m_times = nullptr;
   std::vector<vertex_descriptor> m_vertex;
 
   std::vector<bool> m_in_patch;
