@@ -33,6 +33,9 @@ struct Pattern_patch
   std::vector<vertex_descriptor> vertices;    ///< the vertices of a vertex list
 
   /// the vertices within geodesic distance `radius` of `center`
+  /// \param center the centre of the marked instance
+  /// \param radius its geodesic radius, positive
+  /// \return the patch
   static Pattern_patch disk(vertex_descriptor center, double radius)
   {
     Pattern_patch p;
@@ -42,7 +45,10 @@ struct Pattern_patch
     return p;
   }
   /// the vertices of `range`, which must be connected through the mesh's edges; the centre is
-  /// the vertex farthest from the patch's border
+  /// the midpoint of the patch's medial axis
+  /// \tparam VertexRange a range of `vertex_descriptor`
+  /// \param range the vertices of the marked instance
+  /// \return the patch
   template <class VertexRange>
   static Pattern_patch of_vertices(const VertexRange& range)
   {
