@@ -29,8 +29,7 @@ void add_matrix_command(CLI::App& app, Matrix_options& options)
 {
   CLI::App* cmd = app.add_subcommand(
     "matrix", "Geodesic distances from each source alone to the targets: one row per source, one column per target");
-  cmd->add_option("MESH", options.mesh, "Mesh (.off, .obj, .ply or .stl), as for the distances subcommand")
-    ->required();
+  add_mesh_argument(*cmd, options.mesh);
   auto* sources = cmd->add_option("--source", options.sources,
                                   "Sources, comma-separated: a vertex id, or f:FACE:b0:b1:b2 (a point of a face)")
                     ->delimiter(',')

@@ -65,12 +65,17 @@ const char* const point_help = "a vertex id, or f:FACE:b0:b1:b2 (barycentric coo
 
 } // namespace
 
-void add_mesh_and_sources(CLI::App& cmd, std::string& mesh, std::vector<std::string>& sources)
+void add_mesh_argument(CLI::App& cmd, std::string& mesh)
 {
   cmd.add_option("MESH", mesh,
                  "Mesh (.off, .obj, .ply or .stl): triangles, polygons, soups, non-manifold meshes; vertex ids "
                  "are the file order (.stl: each distinct point where it first appears)")
     ->required();
+}
+
+void add_mesh_and_sources(CLI::App& cmd, std::string& mesh, std::vector<std::string>& sources)
+{
+  add_mesh_argument(cmd, mesh);
   cmd.add_option("--source", sources, std::string("Sources, comma-separated: ") + point_help)
     ->required()
     ->delimiter(',')

@@ -54,6 +54,9 @@ struct Path_options
   bool stats = false;
 };
 
+/// The MESH argument of a sub-command.
+void add_mesh_argument(CLI::App& cmd, std::string& mesh);
+
 /// Declares the arguments the subcommands start with: the mesh and the sources (required).
 void add_mesh_and_sources(CLI::App& cmd, std::string& mesh, std::vector<std::string>& sources);
 

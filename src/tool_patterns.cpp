@@ -29,8 +29,7 @@ void add_patterns_command(CLI::App& app, Patterns_options& options)
   CLI::App* cmd = app.add_subcommand(
     "patterns", "Repetitive pattern detection (thesis chapter 5): from one marked instance, all the others, with a "
                 "correspondence to each and their arrangement");
-  cmd->add_option("MESH", options.mesh, "Mesh (.off, .obj, .ply or .stl), as for the distances subcommand")
-    ->required();
+  add_mesh_argument(*cmd, options.mesh);
   CLI::Option* center = cmd->add_option(
     "--patch-center", options.patch_center,
     "The centre of the marked instance: a vertex id (a face point F:a,b,c is taken at its nearest corner)");

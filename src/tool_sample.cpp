@@ -23,8 +23,7 @@ void add_sample_command(CLI::App& app, Sample_options& options)
   CLI::App* cmd = app.add_subcommand(
     "sample", "Farthest-point sampling with exact geodesic distances: each sample is the vertex farthest from the "
               "samples before it");
-  cmd->add_option("MESH", options.mesh, "Mesh (.off, .obj, .ply or .stl), as for the distances subcommand")
-    ->required();
+  add_mesh_argument(*cmd, options.mesh);
   cmd->add_option("--count", options.count, "How many samples (at most, with --radius)");
   cmd->add_option("--radius", options.radius,
                   "Stop once every vertex is within this geodesic distance of a sample (with --count: whichever "

@@ -44,6 +44,12 @@ Patterns expect_found(const Pattern_scene& scene, double at_least)
   EXPECT_GE(s.precision, at_least) << s;
   EXPECT_FALSE(found.instances.empty());
   const auto& marked = found.instances.front();
+  std::vector<int> instance_of(m.number_of_vertices(), -1); // no vertex in two instances
+  for(std::size_t a = 0; a < found.instances.size(); ++a)
+    for(Vertex v : found.instances[a].vertices) {
+      EXPECT_EQ(instance_of[v.idx()], -1) << "vertex " << v << " in instances " << instance_of[v.idx()] << " and " << a;
+      instance_of[v.idx()] = int(a);
+    }
   for(const auto& instance : found.instances) {
     EXPECT_FALSE(instance.correspondence.empty());
     EXPECT_FALSE(instance.vertices.empty());

@@ -897,34 +897,26 @@ private:
   std::vector<Detected_instance> collect_instances() const
   {
     std::vector<Detected_instance> out;
-    // members: the patch's own vertices; for an instance, the vertices whose nearest sample is
-    // one of its images
-    std::vector<std::size_t> owner(m_sample_vertex.size(), none);
-    for(std::size_t a = 1; a < m_instances.size(); ++a)
-      for(std::size_t q : m_instances[a].correspondence.image)
-        if(q != Pattern_correspondence::unmapped)
-          owner[q] = a;
-    std::vector<std::vector<std::size_t>> members(m_instances.size());
-    members[0] = m_patch_vertices;
-    for(std::size_t v = 0; v < m_vertex.size(); ++v)
-      if(m_cell[v] < owner.size() && owner[m_cell[v]] != none)
-        members[owner[m_cell[v]]].push_back(v);
     for(std::size_t a = 0; a < m_instances.size(); ++a) {
       const Instance& instance = m_instances[a];
       Detected_instance d;
       d.center = instance.center_vertex;
       d.scale = instance.scale_step == none ? 1.0 : m_scales[instance.scale_step];
       d.energy = instance.correspondence.energy;
-      d.vertices = std::move(members[a]);
       for(std::size_t i = 0; i < m_patch_sample.size(); ++i)
         if(instance.correspondence.image[i] != Pattern_correspondence::unmapped)
           d.correspondence.emplace_back(m_sample_vertex[m_patch_sample[i]],
                                         m_sample_vertex[instance.correspondence.image[i]]);
       out.push_back(std::move(d));
     }
+    out.front().vertices = m_patch_vertices;
     return out;
   }
 
+  // The arrangement, and the members of each instance but the patch (whose are its own): the
+  // vertices of its cell of the Voronoi diagram of the centres (so that no vertex is in two
+  // instances) within its size of its centre, or whose nearest sample is one of its images (an
+  // elongated instance reaches beyond its size along its axis).
   void arrange(Detection_result& result) const
   {
     if(result.instances.size() < 2)
@@ -937,6 +929,20 @@ private:
                        m_settings.threads));
     result.arrangement_edges = diagram.dual_edges;
     result.arrangement_triangles = diagram.dual_triangles;
+    std::vector<std::size_t> owner(m_sample_vertex.size(), none);
+    for(std::size_t a = 1; a < m_instances.size(); ++a)
+      for(std::size_t q : m_instances[a].correspondence.image)
+        if(q != Pattern_correspondence::unmapped)
+          owner[q] = a;
+    for(std::size_t v = 0; v < m_vertex.size(); ++v) {
+      const std::size_t a = diagram.vertex_cell[v];
+      if(a == 0 || a >= result.instances.size())
+        continue;
+      const bool near = diagram.vertex_distance[v] <= m_size * result.instances[a].scale;
+      const bool sampled = m_cell[v] < owner.size() && owner[m_cell[v]] == a;
+      if(near || sampled)
+        result.instances[a].vertices.push_back(v);
+    }
   }
 
   const TriangleMesh& m_tm;
