@@ -12,7 +12,8 @@
 //                   [--threads N] [--output FILE.txt] [--labels FILE.txt|FILE.ply] [--stats]
 //   geodesic voronoi MESH --source S[,S...] [--algorithm fwp-mmp|mmp|pmmp] [--threads N]
 //                    --output CELLS.txt|CELLS.ply [--bisectors FILE.obj|FILE.txt] [--dual FILE.obj] [--stats]
-//   geodesic patterns MESH (--patch-center V --patch-radius R | --patch-vertices FILE) [--scales A:B]
+//   geodesic patterns MESH (--patch-center V --patch-radius R | --patch-vertices FILE | --patch-property NAME)
+//                     [--scales A:B]
 //                     [--threads N] --output FILE.json [--labels FILE.ply|FILE.txt] [--arrangement FILE.obj]
 //                     [--stats]
 //

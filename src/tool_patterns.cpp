@@ -13,10 +13,14 @@
 
 #include <CGAL_ext/detect_repetitive_patterns.h>
 
+#include <CGAL/Point_set_3.h>
+#include <CGAL/Point_set_3/IO/PLY.h>
+
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <optional>
 #include <fstream>
 #include <iostream>
@@ -38,9 +42,14 @@ void add_patterns_command(CLI::App& app, Patterns_options& options)
   CLI::Option* list = cmd->add_option(
     "--patch-vertices", options.patch_vertices,
     "Instead of a disk: a text file of the marked instance's vertex ids, one per line (any connected shape)");
+  CLI::Option* property = cmd->add_option(
+    "--patch-property", options.patch_property,
+    "Instead of a disk: the name of a per-vertex property of a .ply MESH, the marked instance being the vertices "
+    "where it is not 0 (a selection saved by MeshLab, for example)");
   center->needs(radius);
   radius->needs(center);
   list->excludes(center)->excludes(radius);
+  property->excludes(center)->excludes(radius)->excludes(list);
   cmd->add_option("--scales", options.scales,
                   "A:B, the sizes of instances sought relative to the marked one (adaptive patterns); default 1:1");
   cmd->add_option("--sample-spacing", options.sample_spacing,
@@ -102,6 +111,44 @@ std::vector<std::size_t> read_vertex_list(std::istream& in, std::size_t number_o
   if(ids.empty())
     throw Tool_error(name + ": no vertex id");
   return ids;
+}
+
+std::vector<std::size_t> read_selected_vertices_ply(const std::string& path, const std::string& name,
+                                                    std::size_t number_of_points)
+{
+  CGAL::Point_set_3<Point> points;
+  std::ifstream in(path, std::ios::binary);
+  if(!in || !CGAL::IO::read_PLY(in, points))
+    throw Tool_error("cannot read the vertex properties of '" + path + "'");
+  if(points.size() != number_of_points)
+    throw Tool_error("'" + path + "' has " + std::to_string(points.size()) + " vertices with properties, the mesh " +
+                     std::to_string(number_of_points));
+  std::vector<std::size_t> selected;
+  bool found = false;
+  const auto take = [&](auto zero) {
+    typedef decltype(zero) Number;
+    const auto [map, exists] = points.template property_map<Number>(name);
+    if(!exists || found)
+      return;
+    found = true;
+    std::size_t id = 0;
+    for(auto it = points.begin(); it != points.end(); ++it, ++id)
+      if(get(map, *it) != zero)
+        selected.push_back(id);
+  };
+  take(std::int8_t(0));
+  take(std::uint8_t(0));
+  take(std::int16_t(0));
+  take(std::uint16_t(0));
+  take(std::int32_t(0));
+  take(std::uint32_t(0));
+  take(float(0));
+  take(double(0));
+  if(!found)
+    throw Tool_error("'" + path + "' has no per-vertex property '" + name + "'");
+  if(selected.empty())
+    throw Tool_error("no vertex of '" + path + "' has a non-zero '" + name + "'");
+  return selected;
 }
 
 bool write_instances_json(std::ostream& os, const std::vector<Found_instance>& instances,
@@ -192,8 +239,11 @@ Patterns_found detect(const Mesh_file& file, const CGAL_ext::Pattern_patch<Mesh>
 int run_patterns(const Patterns_options& options)
 {
   // Validate the command line before the (possibly long) reading and detection.
-  if(options.patch_center.empty() && options.patch_vertices.empty())
-    throw Tool_error("mark the pattern: --patch-center S --patch-radius R, or --patch-vertices FILE");
+  if(options.patch_center.empty() && options.patch_vertices.empty() && options.patch_property.empty())
+    throw Tool_error("mark the pattern: --patch-center S --patch-radius R, --patch-vertices FILE or --patch-property NAME");
+  if(!options.patch_property.empty() &&
+     (options.mesh.size() < 4 || options.mesh.compare(options.mesh.size() - 4, 4, ".ply") != 0))
+    throw Tool_error("--patch-property reads a per-vertex property of a .ply mesh, not of '" + options.mesh + "'");
   const std::pair<double, double> scales =
     options.scales.empty() ? std::make_pair(1.0, 1.0) : parse_scale_range(options.scales);
   std::optional<Surface_point> center;
@@ -226,6 +276,11 @@ int run_patterns(const Patterns_options& options)
       vertex = polygon[best];
     }
     patch = CGAL_ext::Pattern_patch<Mesh>::disk(file.vertex_of_point[vertex], options.patch_radius);
+  } else if(!options.patch_property.empty()) {
+    std::vector<Vertex_index> vertices;
+    for(std::size_t id : read_selected_vertices_ply(options.mesh, options.patch_property, file.soup.points.size()))
+      vertices.push_back(file.vertex_of_point[id]);
+    patch = CGAL_ext::Pattern_patch<Mesh>::of_vertices(vertices);
   } else {
     std::ifstream in(options.patch_vertices);
     if(!in)

@@ -27,6 +27,7 @@ struct Patterns_options
   std::string patch_center;   // a vertex id (a face point is taken at its nearest corner)
   double patch_radius = 0;
   std::string patch_vertices; // a file of vertex ids
+  std::string patch_property; // a per-vertex property of a PLY mesh: the vertices where it is not 0
   std::string scales;         // "A:B"
   double sample_spacing = 1.0 / 3;
   double match_tolerance = 0.35;
@@ -57,6 +58,12 @@ std::pair<double, double> parse_scale_range(const std::string& text);
 /// Vertex ids, one per line (blank lines and lines starting with '#' skipped), each below
 /// `number_of_vertices`; throws Tool_error naming the line otherwise.
 std::vector<std::size_t> read_vertex_list(std::istream& in, std::size_t number_of_vertices, const std::string& name);
+
+/// The vertices of the PLY file at `path` whose per-vertex property `name` (any PLY number type)
+/// is not 0, in the file's ids; throws Tool_error when the file has no such property, when no
+/// vertex has it, or when its vertices are not the `number_of_points` of the mesh read.
+std::vector<std::size_t> read_selected_vertices_ply(const std::string& path, const std::string& name,
+                                                    std::size_t number_of_points);
 
 /// `{"instances": [...], "arrangement": {"edges": [...], "triangles": [...]}}`, the marked patch
 /// first; each instance has "center", "center_vertex", "scale", "energy", "vertices" and

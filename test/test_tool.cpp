@@ -1600,6 +1600,8 @@ std::string binary_ply_with_nan()
 const std::string triangle_points = "0 0 0\n1 0 0\n0 1 0\n";
 
 const std::vector<std::pair<std::string, std::string>> bad_files = {
+  {"tri.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+              "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"},
   {"far.txt", "0\n99999\n"},
   {"apart.txt", "# two vertices far apart\n0\n1500\n"},
   {"quad.off", "OFF\n4 1 0\n" + triangle_points + "1 1 0\n4 0 1 3 2\n"},
@@ -1775,6 +1777,10 @@ const Bad_case bad_cases[] = {
    "far.txt line 2: vertex 99999 is out of range"},
   {"patterns_list_not_connected", "patterns '" + elephant + "' --patch-vertices apart.txt", "p.json",
    "not connected"},
+  {"patterns_property_of_an_off", "patterns '" + elephant + "' --patch-property selected", "p.json",
+   "--patch-property reads a per-vertex property of a .ply mesh"},
+  {"patterns_property_missing", "patterns tri.ply --patch-property selected", "p.json",
+   "'tri.ply' has no per-vertex property 'selected'"},
   {"patterns_radius_beyond_the_mesh", "patterns '" + elephant + "' --patch-center 0 --patch-radius 100", "p.json",
    "larger than the mesh"},
 };
@@ -1985,6 +1991,34 @@ TEST_F(Tool, patterns_finds_every_bump_of_a_plane)
   for(const char* key : {"seconds_sampling", "seconds_signatures", "seconds_matching", "seconds_clustering",
                          "seconds_optimization", "seconds_arrangement"})
     EXPECT_EQ(stats.count(key), 1u) << key;
+
+  // the same bump marked by a per-vertex property of a PLY file (a selection saved by MeshLab)
+  std::ostringstream ply;
+  ply.precision(17);
+  ply << "ply\nformat ascii 1.0\nelement vertex " << n * n
+      << "\nproperty double x\nproperty double y\nproperty double z\nproperty uchar selected\nelement face "
+      << (n - 1) * (n - 1) << "\nproperty list uchar int vertex_indices\nend_header\n";
+  std::istringstream lines_of_off(off.str());
+  std::string line;
+  std::getline(lines_of_off, line);
+  std::getline(lines_of_off, line);
+  for(int v = 0; v < n * n; ++v) {
+    std::getline(lines_of_off, line);
+    const int i = v % n, j = v / n;
+    const bool selected = std::hypot(i * h - 0.2, j * h - 0.2) < radius;
+    ply << line << " " << (selected ? 1 : 0) << "\n";
+  }
+  while(std::getline(lines_of_off, line))
+    ply << line << "\n";
+  write("bumps.ply", ply.str());
+  const Result selected = run("patterns bumps.ply --patch-property selected --output s.json");
+  ASSERT_EQ(selected.exit_code, 0) << selected.err;
+  const std::string selected_json = read_text(path("s.json"));
+  std::size_t found = 0;
+  for(std::size_t at = selected_json.find("\"center_vertex\""); at != std::string::npos;
+      at = selected_json.find("\"center_vertex\"", at + 1))
+    ++found;
+  EXPECT_EQ(found, bumps.size());
 }
 
 TEST(Tool_options, scale_ranges_and_vertex_lists)
