@@ -52,6 +52,10 @@ void add_patterns_command(CLI::App& app, Patterns_options& options)
   property->excludes(center)->excludes(radius)->excludes(list);
   cmd->add_option("--scales", options.scales,
                   "A:B, the sizes of instances sought relative to the marked one (adaptive patterns); default 1:1");
+  cmd->add_option("--stroke", options.stroke,
+                  "With --scales: vertex ids of a path from the marked instance across instances whose size changes "
+                  "along it, comma-separated; each part is matched near the scale the stroke gives it")
+    ->delimiter(',');
   cmd->add_option("--sample-spacing", options.sample_spacing,
                   "Covering radius of the samples, relative to the patch's size; default 1/3");
   cmd->add_option("--match-tolerance", options.match_tolerance,
@@ -196,16 +200,18 @@ struct Patterns_found
 };
 
 Patterns_found detect(const Mesh_file& file, const CGAL_ext::Pattern_patch<Mesh>& patch, const Patterns_options& o,
-                      std::pair<double, double> scales)
+                      std::pair<double, double> scales, const std::vector<Vertex_index>& stroke)
 {
   const Thread_allowance allowance(o.threads);
-  const auto found = CGAL_ext::detect_repetitive_patterns<CGAL::Parallel_if_available_tag>(
-    file.mesh, patch,
-    CGAL_ext::parameters::scale_range(scales)
-      .sample_spacing(o.sample_spacing)
-      .match_tolerance(o.match_tolerance)
-      .consistency_cutoff(o.consistency_cutoff)
-      .number_of_threads(o.threads));
+  const auto np = CGAL_ext::parameters::scale_range(scales)
+                    .sample_spacing(o.sample_spacing)
+                    .match_tolerance(o.match_tolerance)
+                    .consistency_cutoff(o.consistency_cutoff)
+                    .number_of_threads(o.threads);
+  const auto found =
+    stroke.empty()
+      ? CGAL_ext::detect_repetitive_patterns<CGAL::Parallel_if_available_tag>(file.mesh, patch, np)
+      : CGAL_ext::detect_repetitive_patterns<CGAL::Parallel_if_available_tag>(file.mesh, patch, np.stroke(stroke));
   const std::vector<std::size_t> point = point_of_vertex(file);
   Patterns_found out;
   std::vector<long> label_of_vertex(file.mesh.number_of_vertices(), -1);
@@ -291,8 +297,16 @@ int run_patterns(const Patterns_options& options)
     patch = CGAL_ext::Pattern_patch<Mesh>::of_vertices(vertices);
   }
 
+  std::vector<Vertex_index> stroke;
+  for(long long id : options.stroke) {
+    if(id < 0 || std::size_t(id) >= file.soup.points.size())
+      throw Tool_error("--stroke vertex " + std::to_string(id) + " is out of range (the mesh has " +
+                       std::to_string(file.soup.points.size()) + " vertices)");
+    stroke.push_back(file.vertex_of_point[std::size_t(id)]);
+  }
+
   const Stopwatch detect_watch;
-  const Patterns_found found = detect(file, patch, options, scales);
+  const Patterns_found found = detect(file, patch, options, scales, stroke);
   const double seconds_detect = detect_watch.seconds();
 
   std::vector<Output_file> outputs{{options.output, [&](std::ostream& os) {

@@ -29,6 +29,7 @@ struct Patterns_options
   std::string patch_vertices; // a file of vertex ids
   std::string patch_property; // a per-vertex property of a PLY mesh: the vertices where it is not 0
   std::string scales;         // "A:B"
+  std::vector<long long> stroke; // vertex ids of the user's stroke across instances of changing size
   double sample_spacing = 1.0 / 3;
   double match_tolerance = 0.35;
   double consistency_cutoff = 0.7;

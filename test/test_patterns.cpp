@@ -33,8 +33,12 @@ Patterns expect_found(const Pattern_scene& scene, double at_least)
   const Mesh& m = scene.mesh;
   const auto patch = scene.patch_radius > 0 ? CGAL_ext::Pattern_patch<Mesh>::disk(scene.patch_centre, scene.patch_radius)
                                             : CGAL_ext::Pattern_patch<Mesh>::of_vertices(scene.patch_vertices);
-  const Patterns found = CGAL_ext::detect_repetitive_patterns<CGAL::Parallel_if_available_tag>(
-    m, patch, CGAL_ext::parameters::scale_range(scene.scales));
+  const Patterns found =
+    scene.stroke.empty()
+      ? CGAL_ext::detect_repetitive_patterns<CGAL::Parallel_if_available_tag>(
+          m, patch, CGAL_ext::parameters::scale_range(scene.scales))
+      : CGAL_ext::detect_repetitive_patterns<CGAL::Parallel_if_available_tag>(
+          m, patch, CGAL_ext::parameters::scale_range(scene.scales).stroke(scene.stroke));
   const Score s = score(found.instances, scene.truth);
   const auto& st = found.statistics;
   std::cout << s << "; " << m.number_of_vertices() << " vertices, " << st.samples << " samples ("
@@ -105,6 +109,23 @@ TEST(Pattern_detection, Bumps_of_three_sizes_with_a_scale_range)
         nearest = i;
     const double size = scene.truth.radii[nearest] / scene.patch_radius;
     EXPECT_NEAR(instance.scale, size, 0.2 * size);
+  }
+}
+
+// Adaptive patterns with a stroke (thesis 5.3.3): bumps growing from left to right, the stroke
+// from the marked (smallest) one to the right border restricts each sample's scale.
+TEST(Pattern_detection, Growing_bumps_with_a_stroke)
+{
+  const Pattern_scene scene = growing_bumps_on_a_plane(141, 16, 0.04, 12, 0.03);
+  const Patterns found = expect_found(scene, 0.9);
+  for(const auto& instance : found.instances) {
+    std::size_t nearest = 0;
+    for(std::size_t i = 1; i < scene.truth.centres.size(); ++i)
+      if(CGAL::squared_distance(instance.center, scene.truth.centres[i]) <
+         CGAL::squared_distance(instance.center, scene.truth.centres[nearest]))
+        nearest = i;
+    const double size = scene.truth.radii[nearest] / scene.patch_radius;
+    EXPECT_NEAR(instance.scale, size, 0.25 * size);
   }
 }
 
@@ -242,6 +263,12 @@ TEST(Pattern_bad_input, Refused_with_a_message_naming_what)
   refuses(Patch::disk(centre, 0.1), "empty scale range", CGAL_ext::parameters::scale_range(std::make_pair(2.0, 1.0)));
   refuses(Patch::disk(centre, 0.1), "consistency_cutoff", CGAL_ext::parameters::consistency_cutoff(1.0));
   refuses(Patch::disk(centre, 0.1), "sample_spacing", CGAL_ext::parameters::sample_spacing(0.0));
+  refuses(Patch::disk(centre, 0.1), "stroke needs at least 2 vertices",
+          CGAL_ext::parameters::stroke(std::vector<Vertex>{centre}));
+  refuses(Patch::disk(centre, 0.1), "start in the marked instance",
+          CGAL_ext::parameters::stroke(std::vector<Vertex>{Vertex(0), centre}));
+  refuses(Patch::disk(centre, 0.1), "stroke vertex 100000 is out of range",
+          CGAL_ext::parameters::stroke(std::vector<Vertex>{centre, Vertex(100000)}));
 }
 
 TEST(Pattern_bad_input, A_mesh_with_no_other_instance_gives_just_the_patch)

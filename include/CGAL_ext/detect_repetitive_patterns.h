@@ -159,6 +159,13 @@ struct Repetitive_patterns
 ///                           the scales are searched about 10 % apart}
 ///     \cgalParamType{`std::pair<double, double>`, positive, first <= second} \cgalParamDefault{`{1, 1}`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{stroke}
+///     \cgalParamDescription{with `scale_range`: a path of vertices that starts in the patch and crosses instances whose
+///                           size changes along it (thesis 5.3.3). The scale goes geometrically from 1 at its start to
+///                           the end of the range farthest from 1 at its end; each sample is matched only at scales
+///                           within 20 % of its nearest stroke vertex's}
+///     \cgalParamType{a range of `vertex_descriptor`, at least 2} \cgalParamDefault{none: every scale of the range}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_threads}
 ///     \cgalParamDescription{with `CGAL::Parallel_tag`: the threads, `0` for TBB's choice}
 ///     \cgalParamType{`int`, non-negative} \cgalParamDefault{`0`}
@@ -172,7 +179,8 @@ struct Repetitive_patterns
 ///
 /// \throws Geodesic_error when the patch's centre or a vertex is out of range, its radius is not
 ///         positive or covers the whole component, its vertices are not connected, it holds
-///         fewer than 3 samples or is flat, when a named parameter is out of its range, and for
+///         fewer than 3 samples or is flat, when the stroke has fewer than 2 vertices, a vertex out of
+///         range or does not start in the patch, when a named parameter is out of its range, and for
 ///         what `geodesic_distances()` refuses in the mesh. A mesh with no other instance gives
 ///         just the patch.
 template <class ConcurrencyTag = CGAL::Sequential_tag, class TriangleMesh,
@@ -211,6 +219,9 @@ detect_repetitive_patterns(const TriangleMesh& tm, const Pattern_patch<TriangleM
   s.scale_min = scales.first;
   s.scale_max = scales.second;
   s.threads = choose_parameter(get_parameter(np, internal_np::number_of_threads), 0);
+  if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::stroke_t>::value)
+    for(auto v : get_parameter(np, internal_np::stroke))
+      s.stroke.push_back(std::size_t(get(vim, v)));
 
   internal::Pattern_patch_indices indices;
   indices.is_disk = patch.is_disk;

@@ -242,6 +242,7 @@ struct Pattern_scene
   double patch_radius = 0;
   std::vector<Vertex> patch_vertices;   ///< otherwise a vertex list
   std::pair<double, double> scales{1.0, 1.0};
+  std::vector<Vertex> stroke;           ///< a stroke across instances of changing size, if any
 };
 
 /// `bumps` of `height` times their radius on the unit square, an n x n grid, vertices moved at
@@ -338,6 +339,26 @@ inline Pattern_scene bumps_of_three_sizes_on_a_plane(int n, int count, double ra
     bumps[i].radius = radius * (i % 3 == 0 ? 1.0 : i % 3 == 1 ? 0.75 : 1.4);
   Pattern_scene scene = bumps_on_a_plane(n, bumps, 0.4, seed, noise);
   scene.scales = {0.6, 1.6};
+  return scene;
+}
+
+/// Round bumps whose radius grows from left to right (`radius` x (0.8 + 1.2 x)) on the unit
+/// square; the leftmost is marked, the scale range is 1:2 and the stroke runs along the grid
+/// row through its centre to the right border (the user's stroke across instances of growing size).
+inline Pattern_scene growing_bumps_on_a_plane(int n, int count, double radius, unsigned seed, double noise)
+{
+  const double largest = radius * 2.0;
+  std::vector<Planted> bumps = irregular_layout(count, 1.2 * largest, 1 - 1.2 * largest, 1.2 * largest,
+                                                1 - 1.2 * largest, 2.4 * largest, radius, seed);
+  std::sort(bumps.begin(), bumps.end(), [](const Planted& a, const Planted& b) { return a.x < b.x; });
+  for(Planted& b : bumps)
+    b.radius = radius * (0.8 + 1.2 * b.x);
+  Pattern_scene scene = bumps_on_a_plane(n, bumps, 0.4, seed, noise);
+  scene.scales = {1.0, 2.0};
+  const double h = 1.0 / (n - 1);
+  const int row = int(std::lround(bumps[0].y / h)), first = int(std::lround(bumps[0].x / h));
+  for(int i = first; i < n; ++i)
+    scene.stroke.push_back(Vertex(std::size_t(row * n + i)));
   return scene;
 }
 

@@ -53,6 +53,11 @@ struct Pattern_settings
   double alpha = 1, beta = 1, gamma = 1; ///< weights of Eq. 5.4
   double search_radius = 3.0;        ///< how far from an instance's centre its neighbours are sought
   double scale_min = 1, scale_max = 1; ///< instance size over patch size
+  /// a vertex path from the marked patch across instances whose size changes along it (by
+  /// vertex index; empty: none): the scale is 1 where it starts and the end of the range
+  /// farthest from 1 where it ends, and each sample is matched only at scales within 20 % of
+  /// the scale of its nearest stroke vertex (thesis 5.3.3)
+  std::vector<std::size_t> stroke;
   int threads = 0;
 };
 
@@ -338,6 +343,49 @@ private:
   }
 
   // Exact farthest-point samples, the patch's centre first, covering the mesh within the spacing.
+  // The scale the stroke gives each sample: its nearest stroke vertex's, the scale going
+  // geometrically from 1 at the stroke's start to the end of the range farthest from 1 at its
+  // end, by arc length.
+  void set_stroke_scales()
+  {
+    m_stroke_scale.clear();
+    const std::vector<std::size_t>& stroke = m_settings.stroke;
+    if(stroke.empty())
+      return;
+    if(stroke.size() < 2)
+      throw Geodesic_error("pattern detection: a stroke needs at least 2 vertices");
+    for(std::size_t v : stroke)
+      if(v >= m_vertex.size())
+        throw Geodesic_error("pattern detection: stroke vertex " + std::to_string(v) + " is out of range (the mesh has " +
+                             std::to_string(m_vertex.size()) + " vertices)");
+    if(!m_in_patch[stroke.front()])
+      throw Geodesic_error("pattern detection: the stroke must start in the marked instance (vertex " +
+                           std::to_string(stroke.front()) + " is not in it)");
+    std::vector<double> along{0.0};
+    for(std::size_t k = 1; k < stroke.size(); ++k)
+      along.push_back(along.back() + std::sqrt(double(CGAL::squared_distance(get(m_vpm, m_vertex[stroke[k - 1]]),
+                                                                             get(m_vpm, m_vertex[stroke[k]])))));
+    if(!(along.back() > 0))
+      throw Geodesic_error("pattern detection: the stroke has no length");
+    const double end = std::abs(std::log(m_settings.scale_max)) >= std::abs(std::log(m_settings.scale_min))
+                         ? m_settings.scale_max
+                         : m_settings.scale_min;
+    std::vector<vertex_descriptor> sources;
+    for(std::size_t v : stroke)
+      sources.push_back(m_vertex[v]);
+    std::vector<double> distance(m_vertex.size(), 0.0);
+    std::vector<std::size_t> nearest(m_vertex.size(), none);
+    geodesic_distances<Concurrency>(m_tm, CGAL::make_property_map(distance), sources,
+                                    CGAL_ext::parameters::vertex_point_map(m_vpm).vertex_index_map(m_vim)
+                                      .vertex_source_map(CGAL::make_property_map(nearest)));
+    m_stroke_scale.assign(m_sample_vertex.size(), 1.0);
+    for(std::size_t q = 0; q < m_sample_vertex.size(); ++q) {
+      const std::size_t k = nearest[m_sample_vertex[q]];
+      if(k < stroke.size())
+        m_stroke_scale[q] = std::pow(end, along[k] / along.back());
+    }
+  }
+
   void sample()
   {
     m_spacing = m_settings.sample_spacing * m_size;
@@ -362,6 +410,7 @@ private:
                            " samples, too few to match (mark a larger patch or lower sample_spacing)");
     m_landmark = std::size_t(std::find(m_patch_sample.begin(), m_patch_sample.end(), std::size_t(0)) -
                              m_patch_sample.begin());
+    set_stroke_scales();
     m_times->samples = m_sample_vertex.size();
     m_times->patch_samples = m_patch_sample.size();
   }
@@ -605,6 +654,8 @@ private:
           continue;
         Pattern_match best{i, q, 1.0, std::numeric_limits<double>::infinity()};
         for(std::size_t step = 0; step < m_scales.size(); ++step) {
+          if(!m_stroke_scale.empty() && std::abs(std::log(m_scales[step] / m_stroke_scale[q])) > std::log(1.2))
+            continue;
           const double cost = signature_cost(i, step, q);
           if(cost < best.signature_distance) {
             best.signature_distance = cost;
@@ -968,6 +1019,7 @@ private:
   std::size_t m_landmark = 0;                  // the centre's index among them
 
   std::vector<double> m_scales;
+  std::vector<double> m_stroke_scale; // by sample, with a stroke: the scale near it
   std::vector<Principal_curvatures> m_curvature; // by vertex
   std::vector<double> m_area;                    // by vertex
   double m_band_width = 1;                       // of the ring sums

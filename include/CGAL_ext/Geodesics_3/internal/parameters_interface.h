@@ -24,3 +24,4 @@ CGAL_ext_add_named_parameter(consistency_cutoff_t, consistency_cutoff, consisten
 CGAL_ext_add_named_parameter(energy_weights_t, energy_weights, energy_weights)
 CGAL_ext_add_named_parameter(search_radius_t, search_radius, search_radius)
 CGAL_ext_add_named_parameter(scale_range_t, scale_range, scale_range)
+CGAL_ext_add_named_parameter(stroke_t, stroke, stroke)
