@@ -21,6 +21,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <fstream>
 #include <iostream>
@@ -203,7 +204,13 @@ Patterns_found detect(const Mesh_file& file, const CGAL_ext::Pattern_patch<Mesh>
                       std::pair<double, double> scales, const std::vector<Vertex_index>& stroke)
 {
   const Thread_allowance allowance(o.threads);
+  Progress_line progress;
+  const std::function<bool(double)> show_progress = [&progress](double done) {
+    progress.show_percent("patterns", done);
+    return true;
+  };
   const auto np = CGAL_ext::parameters::scale_range(scales)
+                    .callback(show_progress)
                     .sample_spacing(o.sample_spacing)
                     .match_tolerance(o.match_tolerance)
                     .consistency_cutoff(o.consistency_cutoff)
@@ -212,6 +219,7 @@ Patterns_found detect(const Mesh_file& file, const CGAL_ext::Pattern_patch<Mesh>
     stroke.empty()
       ? CGAL_ext::detect_repetitive_patterns<CGAL::Parallel_if_available_tag>(file.mesh, patch, np)
       : CGAL_ext::detect_repetitive_patterns<CGAL::Parallel_if_available_tag>(file.mesh, patch, np.stroke(stroke));
+  progress.clear();
   const std::vector<std::size_t> point = point_of_vertex(file);
   Patterns_found out;
   std::vector<long> label_of_vertex(file.mesh.number_of_vertices(), -1);

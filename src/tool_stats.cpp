@@ -15,13 +15,25 @@ namespace geodesic_tool {
 
 Progress_line::Progress_line() : m_on_terminal(::isatty(2)) {}
 
-void Progress_line::show(const char* what, std::size_t done, std::size_t total)
+bool Progress_line::due()
 {
   const Clock::time_point now = Clock::now();
-  if(m_on_terminal && now - m_start > std::chrono::seconds(1) && now - m_last_shown > std::chrono::milliseconds(500)) {
+  if(!m_on_terminal || now - m_start <= std::chrono::seconds(1) || now - m_last_shown <= std::chrono::milliseconds(500))
+    return false;
+  m_last_shown = now;
+  return true;
+}
+
+void Progress_line::show(const char* what, std::size_t done, std::size_t total)
+{
+  if(due())
     std::cerr << "\r" << what << " " << done << " of " << total << std::flush;
-    m_last_shown = now;
-  }
+}
+
+void Progress_line::show_percent(const char* what, double fraction)
+{
+  if(due())
+    std::cerr << "\r" << what << " " << int(100 * fraction) << " %" << std::flush;
 }
 
 void Progress_line::clear()

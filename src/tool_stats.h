@@ -25,16 +25,24 @@ private:
   Clock::time_point m_start = Clock::now();
 };
 
-/// A progress line on the standard error, `what done of total`, shown only on a terminal, once
-/// the run has taken more than a second, and at most twice a second; `clear()` erases it.
+/// A progress line on the standard error, `what done of total` or `what N %`, shown only on a
+/// terminal, once the run has taken more than a second, and at most twice a second; `clear()`
+/// erases it.
 class Progress_line
 {
 public:
   Progress_line();
+  ~Progress_line() { clear(); }
+  Progress_line(const Progress_line&) = delete;
+  Progress_line& operator=(const Progress_line&) = delete;
   void show(const char* what, std::size_t done, std::size_t total);
+  /// `fraction` of the work done, in [0, 1]
+  void show_percent(const char* what, double fraction);
   void clear();
 
 private:
+  bool due();
+
   typedef std::chrono::steady_clock Clock;
   bool m_on_terminal;
   Clock::time_point m_start = Clock::now(), m_last_shown = m_start;

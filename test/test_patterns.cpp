@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <random>
 #include <set>
 #include <string>
@@ -69,6 +70,20 @@ Patterns expect_found(const Pattern_scene& scene, double at_least)
   return found;
 }
 
+/// Each instance's scale is its nearest planted instance's size over the patch's, to `relative`.
+void expect_scales(const Patterns& found, const Pattern_scene& scene, double relative)
+{
+  for(const auto& instance : found.instances) {
+    std::size_t nearest = 0;
+    for(std::size_t i = 1; i < scene.truth.centres.size(); ++i)
+      if(CGAL::squared_distance(instance.center, scene.truth.centres[i]) <
+         CGAL::squared_distance(instance.center, scene.truth.centres[nearest]))
+        nearest = i;
+    const double size = scene.truth.radii[nearest] / scene.patch_radius;
+    EXPECT_NEAR(instance.scale, size, relative * size);
+  }
+}
+
 } // namespace
 
 TEST(Pattern_detection, Round_bumps_on_a_plane_laid_out_irregularly_with_noise)
@@ -100,16 +115,7 @@ TEST(Pattern_detection, Elongated_bumps_in_several_orientations_from_a_vertex_li
 TEST(Pattern_detection, Bumps_of_three_sizes_with_a_scale_range)
 {
   const Pattern_scene scene = bumps_of_three_sizes_on_a_plane(141, 22, 0.05, 5, 0.03);
-  const Patterns found = expect_found(scene, 0.9);
-  for(const auto& instance : found.instances) {
-    std::size_t nearest = 0;
-    for(std::size_t i = 1; i < scene.truth.centres.size(); ++i)
-      if(CGAL::squared_distance(instance.center, scene.truth.centres[i]) <
-         CGAL::squared_distance(instance.center, scene.truth.centres[nearest]))
-        nearest = i;
-    const double size = scene.truth.radii[nearest] / scene.patch_radius;
-    EXPECT_NEAR(instance.scale, size, 0.2 * size);
-  }
+  expect_scales(expect_found(scene, 0.9), scene, 0.2);
 }
 
 // Adaptive patterns with a stroke (thesis 5.3.3): bumps growing from left to right, the stroke
@@ -117,16 +123,7 @@ TEST(Pattern_detection, Bumps_of_three_sizes_with_a_scale_range)
 TEST(Pattern_detection, Growing_bumps_with_a_stroke)
 {
   const Pattern_scene scene = growing_bumps_on_a_plane(141, 16, 0.04, 12, 0.03);
-  const Patterns found = expect_found(scene, 0.9);
-  for(const auto& instance : found.instances) {
-    std::size_t nearest = 0;
-    for(std::size_t i = 1; i < scene.truth.centres.size(); ++i)
-      if(CGAL::squared_distance(instance.center, scene.truth.centres[i]) <
-         CGAL::squared_distance(instance.center, scene.truth.centres[nearest]))
-        nearest = i;
-    const double size = scene.truth.radii[nearest] / scene.patch_radius;
-    EXPECT_NEAR(instance.scale, size, 0.25 * size);
-  }
+  expect_scales(expect_found(scene, 0.9), scene, 0.25);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -299,6 +296,42 @@ TEST(Pattern_detection, Same_instances_for_1_2_and_4_threads)
   EXPECT_GE(centres[0].size(), 9u);
   EXPECT_EQ(centres[0], centres[1]);
   EXPECT_EQ(centres[0], centres[2]);
+}
+
+// The callback hears the fraction done, never decreasing, through every step to 1; its false
+// stops the run with an error.
+TEST(Pattern_detection, Progress_reaches_the_callback_which_can_stop_the_run)
+{
+  const double radius = 0.06;
+  const std::vector<Planted> bumps = irregular_layout(10, 0.1, 0.9, 0.1, 0.9, 2.6 * radius, radius, 6);
+  const Mesh m = bumpy_plane(81, 1.0 / 80, bumps, 0.4);
+  const auto patch = CGAL_ext::Pattern_patch<Mesh>::disk(nearest_vertex(m, Point(bumps[0].x, bumps[0].y, 0.024)), radius);
+  std::vector<double> heard;
+  const std::function<bool(double)> listen = [&](double done) {
+    heard.push_back(done);
+    return true;
+  };
+  const auto found = CGAL_ext::detect_repetitive_patterns(m, patch, CGAL_ext::parameters::callback(listen));
+  EXPECT_GE(found.instances.size(), 9u);
+  ASSERT_GT(heard.size(), 20u);
+  EXPECT_TRUE(std::is_sorted(heard.begin(), heard.end()));
+  EXPECT_GE(heard.front(), 0.0);
+  EXPECT_LT(heard.front(), 0.1);
+  EXPECT_EQ(heard.back(), 1.0);
+  EXPECT_GT(std::count_if(heard.begin(), heard.end(), [](double f) { return f > 0.1 && f < 0.9; }), 10);
+
+  std::size_t calls = 0;
+  const std::function<bool(double)> stop_at_half = [&](double done) {
+    ++calls;
+    return done < 0.5;
+  };
+  try {
+    CGAL_ext::detect_repetitive_patterns(m, patch, CGAL_ext::parameters::callback(stop_at_half));
+    ADD_FAILURE() << "the run went on after the callback said stop";
+  } catch(const CGAL_ext::Geodesic_error& e) {
+    EXPECT_NE(std::string(e.what()).find("interrupted"), std::string::npos) << e.what();
+  }
+  EXPECT_LT(calls, heard.size());
 }
 
 // Real meshes of CGAL's data set (no planted instances): the pipeline runs through, the marked

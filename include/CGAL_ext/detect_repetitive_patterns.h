@@ -170,6 +170,12 @@ struct Repetitive_patterns
 ///     \cgalParamDescription{with `CGAL::Parallel_tag`: the threads, `0` for TBB's choice}
 ///     \cgalParamType{`int`, non-negative} \cgalParamDefault{`0`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{callback}
+///     \cgalParamDescription{called during the run with the fraction of it done (never decreasing, `1` at the end),
+///                           from the calling thread; returning `false` stops the run, which then throws
+///                           `Geodesic_error`}
+///     \cgalParamType{an instance of `std::function<bool(double)>`} \cgalParamDefault{none}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{vertex_point_map, vertex_index_map}
 ///     \cgalParamDescription{as in `geodesic_distances()`}
 ///   \cgalParamNEnd
@@ -180,7 +186,8 @@ struct Repetitive_patterns
 /// \throws Geodesic_error when the patch's centre or a vertex is out of range, its radius is not
 ///         positive or covers the whole component, its vertices are not connected, it holds
 ///         fewer than 3 samples or is flat, when the stroke has fewer than 2 vertices, a vertex out of
-///         range or does not start in the patch, when a named parameter is out of its range, and for
+///         range or does not start in the patch, when a named parameter is out of its range, when the
+///         callback stops the run, and for
 ///         what `geodesic_distances()` refuses in the mesh. A mesh with no other instance gives
 ///         just the patch.
 template <class ConcurrencyTag = CGAL::Sequential_tag, class TriangleMesh,
@@ -222,6 +229,8 @@ detect_repetitive_patterns(const TriangleMesh& tm, const Pattern_patch<TriangleM
   if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::stroke_t>::value)
     for(auto v : get_parameter(np, internal_np::stroke))
       s.stroke.push_back(std::size_t(get(vim, v)));
+  if constexpr(!parameters::is_default_parameter<NamedParameters, CGAL::internal_np::callback_t>::value)
+    s.progress = get_parameter(np, CGAL::internal_np::callback);
 
   internal::Pattern_patch_indices indices;
   indices.is_disk = patch.is_disk;

@@ -13,6 +13,7 @@
 #include <CGAL_ext/Geodesics_3/internal/Sources.h>
 #include <CGAL_ext/Geodesics_3/internal/VTP_solver.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <limits>
 #include <string>
@@ -45,6 +46,7 @@ public:
     m_solver.keep_field_for_next_run(index);
     if(is_isolated_point(m_mesh, v)) {
       m_solver.set_isolated_point(v, 0., index);
+      m_mesh.for_each_copy_of_point(v, [&](int u) { m_lowered.push_back(u); });
     } else {
       Source_point s;
       s.vertex = v;
@@ -59,13 +61,7 @@ public:
       m_statistics.wavefront_resets += run.wavefront_resets;
       m_statistics.seconds_solve += run.seconds_solve;
     }
-    // the farthest vertex now, the lowest index of those at the largest distance (+infinity
-    // first: a component with no sample yet)
-    const std::vector<double>& d = m_solver.distances();
-    m_farthest = 0;
-    for(std::size_t u = 1; u < m_mesh.number_of_mesh_vertices; ++u)
-      if(d[u] > d[std::size_t(m_farthest)])
-        m_farthest = int(u);
+    update_farthest();
   }
 
   /// The vertex of the caller's mesh farthest from every sample.
@@ -80,11 +76,57 @@ public:
   const Geodesic_statistics& statistics() const { return m_statistics; }
 
 private:
+  // The vertices of the caller's mesh by distance, the largest first and the lowest index first
+  // among equals. A run only lowers distances, so it pushes the vertices it reached; an entry
+  // whose distance is no longer its vertex's is dropped when it comes to the top. The heap is
+  // rebuilt when the stale entries outgrow the mesh, so that a sample costs what its run swept,
+  // not a scan of the mesh.
+  struct Candidate
+  {
+    double distance;
+    int vertex;
+    bool operator<(const Candidate& c) const
+    {
+      return distance < c.distance || (distance == c.distance && vertex > c.vertex);
+    }
+  };
+
+  void update_farthest()
+  {
+    const std::vector<double>& d = m_solver.distances();
+    const std::size_t n = m_mesh.number_of_mesh_vertices;
+    const auto push = [&](int u) {
+      if(std::size_t(u) < n) {
+        m_heap.push_back(Candidate{d[std::size_t(u)], u});
+        std::push_heap(m_heap.begin(), m_heap.end());
+      }
+    };
+    if(m_samples.size() == 1 || m_heap.size() > 4 * n) {
+      m_heap.clear();
+      for(std::size_t u = 0; u < n; ++u)
+        m_heap.push_back(Candidate{d[u], int(u)});
+      std::make_heap(m_heap.begin(), m_heap.end());
+    } else {
+      for(int u : m_solver.reached_vertices())
+        push(u);
+      for(int u : m_lowered)
+        push(u);
+    }
+    m_lowered.clear();
+    while(m_heap.front().distance != d[std::size_t(m_heap.front().vertex)]) {
+      std::pop_heap(m_heap.begin(), m_heap.end());
+      m_heap.pop_back();
+    }
+    m_farthest = m_heap.front().vertex;
+  }
+
   const Mesh_cache& m_mesh;
   const Solver_settings m_settings;
   VTP_solver m_solver;
   std::vector<int> m_samples;
   int m_farthest = 0;
+  std::vector<Candidate> m_heap;
+  std::vector<int> m_lowered; // set without a run (isolated points)
   Geodesic_statistics m_statistics;
 };
 

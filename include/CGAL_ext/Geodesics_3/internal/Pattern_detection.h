@@ -23,11 +23,14 @@
 #include <CGAL_ext/geodesic_distances.h>
 #include <CGAL_ext/geodesic_voronoi_diagram.h>
 
+#include <boost/iterator/function_output_iterator.hpp>
+
 #include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
 #include <cstddef>
+#include <functional>
 #include <limits>
 #include <numeric>
 #include <queue>
@@ -59,6 +62,9 @@ struct Pattern_settings
   /// the scale of its nearest stroke vertex (thesis 5.3.3)
   std::vector<std::size_t> stroke;
   int threads = 0;
+  /// called with the fraction of the run done, never decreasing, 1 at the end; `false` stops
+  /// the run (empty: none)
+  std::function<bool(double)> progress;
 };
 
 /// The marked patch, by vertex index: its vertices and the centre, or a centre and a radius.
@@ -113,19 +119,23 @@ public:
     m_times = &result.statistics;
     auto start = Clock::now();
     set_patch(patch);
+    report(Step::sampling, 0);
     sample();
     m_times->sampling_seconds = seconds_since(start);
     start = Clock::now();
     compute_signatures();
     m_times->signature_seconds = seconds_since(start);
     grow_regions();
+    report(Step::centres, 0);
     start = Clock::now();
     place_centres();
     m_times->optimization_seconds += seconds_since(start);
+    report(Step::arrangement, 0);
     start = Clock::now();
     result.instances = collect_instances();
     arrange(result);
     m_times->arrangement_seconds = seconds_since(start);
+    report(Step::arrangement, 1);
     return result;
   }
 
@@ -137,6 +147,21 @@ private:
     std::size_t center_sample = 0;
     std::size_t center_vertex = 0;
   };
+
+  enum class Step { sampling, signatures, growing, centres, arrangement };
+
+  // Tells the caller's callback how far the run is: `within` of `step` done.
+  void report(Step step, double within)
+  {
+    // where each step starts and ends, as a fraction of a run (the shares of a golf ball's)
+    static constexpr double bounds[] = {0.0, 0.35, 0.65, 0.8, 0.87, 1.0};
+    if(!m_settings.progress)
+      return;
+    const double a = bounds[int(step)], b = bounds[int(step) + 1];
+    m_reported = std::max(m_reported, a + (b - a) * std::clamp(within, 0.0, 1.0));
+    if(!m_settings.progress(m_reported))
+      throw Geodesic_error("pattern detection: interrupted by the callback");
+  }
 
   static double seconds_since(Clock::time_point start)
   {
@@ -245,7 +270,8 @@ private:
     m_times->patch_radius = m_radius;
     // the size of the patch: the radius of a disk of its area (its radius when it is a disk,
     // less when it is elongated, whose samples and signatures follow its width)
-    const std::vector<double> area = vertex_areas(m_tm, m_vpm, m_vim);
+    m_area = vertex_areas(m_tm, m_vpm, m_vim);
+    const std::vector<double>& area = m_area;
     double patch_area = 0;
     for(std::size_t v = 0; v < n; ++v)
       if(m_in_patch[v])
@@ -390,9 +416,15 @@ private:
   {
     m_spacing = m_settings.sample_spacing * m_size;
     std::vector<vertex_descriptor> samples;
+    // the count expected of a covering at this spacing, for the progress only (samples are at
+    // least a spacing apart, about one per (sqrt(3)/2) spacing^2)
+    const double expected = std::accumulate(m_area.begin(), m_area.end(), 0.0) / (0.87 * m_spacing * m_spacing);
     m_cell.assign(m_vertex.size(), 0);
     farthest_point_sampling<Concurrency>(
-      m_tm, m_vertex.size(), std::back_inserter(samples),
+      m_tm, m_vertex.size(), boost::make_function_output_iterator([&](vertex_descriptor v) {
+        samples.push_back(v);
+        report(Step::sampling, double(samples.size()) / expected);
+      }),
       CGAL_ext::parameters::vertex_point_map(m_vpm).vertex_index_map(m_vim).number_of_threads(m_settings.threads)
         .first_sample(m_vertex[m_center]).covering_radius(m_spacing).vertex_source_map(CGAL::make_property_map(m_cell)));
     m_sample_vertex.clear();
@@ -432,7 +464,6 @@ private:
     set_scales();
     compute_patch_distances();
     m_curvature = vertex_principal_curvatures(m_tm, m_vpm, m_vim, parallel && m_settings.threads != 1);
-    m_area = vertex_areas(m_tm, m_vpm, m_vim);
     const std::vector<Principal_curvatures>& curvature = m_curvature;
     const std::vector<double>& area = m_area;
     const double signature_radius = m_settings.signature_radius * m_size;
@@ -462,6 +493,7 @@ private:
             m_near[s].emplace_back(t, d);
         }
         std::sort(m_near[s].begin(), m_near[s].end());
+        report(Step::signatures, double(s + 1) / double(n));
       },
       solver_parameters(row_radius));
 
@@ -579,6 +611,8 @@ private:
             m_used[q] = true;
         to_search.push(m_instances.size() - 1);
       }
+      // a guess: each instance found is searched around once
+      report(Step::growing, double(m_times->searches) / double(m_instances.size() + 1));
     };
     std::vector<std::size_t> seeds;
     std::size_t next_seed = 0;
@@ -1001,6 +1035,7 @@ private:
   VertexIndexMap m_vim;
   Pattern_settings m_settings;
   Pattern_statistics* m_times = nullptr;
+  double m_reported = 0;
   std::vector<vertex_descriptor> m_vertex;
 
   std::vector<bool> m_in_patch;
