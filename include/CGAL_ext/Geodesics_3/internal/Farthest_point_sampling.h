@@ -60,6 +60,9 @@ public:
       m_statistics.lists_propagated += run.lists_propagated;
       m_statistics.wavefront_resets += run.wavefront_resets;
       m_statistics.seconds_solve += run.seconds_solve;
+      m_statistics.seconds_selection += run.seconds_selection;
+      m_statistics.seconds_propagation += run.seconds_propagation;
+      m_statistics.seconds_merge += run.seconds_merge;
     }
     update_farthest();
   }
