@@ -34,6 +34,7 @@ public:
     : m_mesh(mesh)
     , m_settings(settings)
     , m_solver(mesh, settings, parallel)
+    , m_arena(settings.number_of_threads)
   {
   }
 
@@ -51,7 +52,7 @@ public:
       Source_point s;
       s.vertex = v;
       m_solver.add_source(s);
-      run_solver<parallel>(m_solver, m_settings.number_of_threads);
+      m_arena.execute([this] { m_solver.run(); });
       const Geodesic_statistics& run = m_solver.statistics();
       m_statistics.windows_created += run.windows_created;
       m_statistics.peak_windows = std::max(m_statistics.peak_windows, run.peak_windows);
@@ -126,6 +127,7 @@ private:
   const Mesh_cache& m_mesh;
   const Solver_settings m_settings;
   VTP_solver m_solver;
+  Solver_arena<parallel> m_arena;
   std::vector<int> m_samples;
   int m_farthest = 0;
   std::vector<Candidate> m_heap;

@@ -223,28 +223,53 @@ constexpr bool is_parallel_tag()
   return std::is_same<ConcurrencyTag, CGAL::Parallel_tag>::value;
 }
 
-/// Calls `f()` in a task arena of `threads` threads (0: TBB's choice) when parallel, here
-/// otherwise: the arena bounds the threads of this call only, never a process-wide setting.
+/// A task arena of `threads` threads (0: TBB's choice) when parallel, nothing otherwise: it
+/// bounds the threads of one call only, never a process-wide setting. Kept by a caller that
+/// runs many short solves (one per sample), since making an arena costs as much as a small run.
+template <bool parallel>
+class Solver_arena
+{
+public:
+  explicit Solver_arena(int threads)
+#ifdef CGAL_LINKED_WITH_TBB
+    : m_arena(threads > 0 ? threads : tbb::task_arena::automatic)
+#endif
+  {
+    (void)threads;
+  }
+
+  /// Calls `f()` in the arena when parallel, here otherwise.
+  template <class Function>
+  void execute(const Function& f)
+  {
+#ifdef CGAL_LINKED_WITH_TBB
+    if constexpr(parallel) {
+      // libtbb is not instrumented: state the hand-over into the arena and back
+      char start = 0, done = 0;
+      sanitizer_release(&start);
+      const Sanitizer_on_exit back(sanitizer_acquire, &done);
+      m_arena.execute([&] {
+        sanitizer_acquire(&start);
+        const Sanitizer_on_exit end(sanitizer_release, &done);
+        f();
+      });
+      return;
+    }
+#endif
+    f();
+  }
+
+private:
+#ifdef CGAL_LINKED_WITH_TBB
+  tbb::task_arena m_arena;
+#endif
+};
+
+/// Calls `f()` in a task arena of `threads` threads when parallel, here otherwise.
 template <bool parallel, class Function>
 void run_in_arena(int threads, const Function& f)
 {
-#ifdef CGAL_LINKED_WITH_TBB
-  if constexpr(parallel) {
-    tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
-    // libtbb is not instrumented: state the hand-over into the arena and back
-    char start = 0, done = 0;
-    sanitizer_release(&start);
-    const Sanitizer_on_exit back(sanitizer_acquire, &done);
-    arena.execute([&] {
-      sanitizer_acquire(&start);
-      const Sanitizer_on_exit end(sanitizer_release, &done);
-      f();
-    });
-    return;
-  }
-#endif
-  (void)threads;
-  f();
+  Solver_arena<parallel>(threads).execute(f);
 }
 
 /// Runs a solver, on `threads` threads when parallel (see `run_in_arena`).
