@@ -219,7 +219,6 @@ Patterns_found detect(const Mesh_file& file, const CGAL_ext::Pattern_patch<Mesh>
     stroke.empty()
       ? CGAL_ext::detect_repetitive_patterns<CGAL::Parallel_if_available_tag>(file.mesh, patch, np)
       : CGAL_ext::detect_repetitive_patterns<CGAL::Parallel_if_available_tag>(file.mesh, patch, np.stroke(stroke));
-  progress.clear();
   const std::vector<std::size_t> point = point_of_vertex(file);
   Patterns_found out;
   std::vector<long> label_of_vertex(file.mesh.number_of_vertices(), -1);

@@ -70,6 +70,24 @@ Patterns expect_found(const Pattern_scene& scene, double at_least)
   return found;
 }
 
+/// Ten round bumps on a coarse plane (6,561 vertices), the first marked: a quick whole run.
+struct Small_scene
+{
+  Mesh mesh;
+  CGAL_ext::Pattern_patch<Mesh> patch;
+};
+
+Small_scene ten_bumps()
+{
+  const double radius = 0.06;
+  const std::vector<Planted> bumps = irregular_layout(10, 0.1, 0.9, 0.1, 0.9, 2.6 * radius, radius, 6);
+  Small_scene scene;
+  scene.mesh = bumpy_plane(81, 1.0 / 80, bumps, 0.4);
+  scene.patch =
+    CGAL_ext::Pattern_patch<Mesh>::disk(nearest_vertex(scene.mesh, Point(bumps[0].x, bumps[0].y, 0.024)), radius);
+  return scene;
+}
+
 /// Each instance's scale is its nearest planted instance's size over the patch's, to `relative`.
 void expect_scales(const Patterns& found, const Pattern_scene& scene, double relative)
 {
@@ -281,10 +299,9 @@ TEST(Pattern_bad_input, A_mesh_with_no_other_instance_gives_just_the_patch)
 
 TEST(Pattern_detection, Same_instances_for_1_2_and_4_threads)
 {
-  const double radius = 0.06;
-  const std::vector<Planted> bumps = irregular_layout(10, 0.1, 0.9, 0.1, 0.9, 2.6 * radius, radius, 6);
-  const Mesh m = bumpy_plane(81, 1.0 / 80, bumps, 0.4);
-  const auto patch = CGAL_ext::Pattern_patch<Mesh>::disk(nearest_vertex(m, Point(bumps[0].x, bumps[0].y, 0.024)), radius);
+  const Small_scene scene = ten_bumps();
+  const Mesh& m = scene.mesh;
+  const auto& patch = scene.patch;
   std::vector<std::vector<Vertex>> centres;
   for(int threads : {1, 2, 4}) {
     const auto found = CGAL_ext::detect_repetitive_patterns<CGAL::Parallel_if_available_tag>(
@@ -302,10 +319,9 @@ TEST(Pattern_detection, Same_instances_for_1_2_and_4_threads)
 // stops the run with an error.
 TEST(Pattern_detection, Progress_reaches_the_callback_which_can_stop_the_run)
 {
-  const double radius = 0.06;
-  const std::vector<Planted> bumps = irregular_layout(10, 0.1, 0.9, 0.1, 0.9, 2.6 * radius, radius, 6);
-  const Mesh m = bumpy_plane(81, 1.0 / 80, bumps, 0.4);
-  const auto patch = CGAL_ext::Pattern_patch<Mesh>::disk(nearest_vertex(m, Point(bumps[0].x, bumps[0].y, 0.024)), radius);
+  const Small_scene scene = ten_bumps();
+  const Mesh& m = scene.mesh;
+  const auto& patch = scene.patch;
   std::vector<double> heard;
   const std::function<bool(double)> listen = [&](double done) {
     heard.push_back(done);

@@ -47,7 +47,6 @@ public:
     m_solver.keep_field_for_next_run(index);
     if(is_isolated_point(m_mesh, v)) {
       m_solver.set_isolated_point(v, 0., index);
-      m_mesh.for_each_copy_of_point(v, [&](int u) { m_lowered.push_back(u); });
     } else {
       Source_point s;
       s.vertex = v;
@@ -81,7 +80,8 @@ public:
 
 private:
   // The vertices of the caller's mesh by distance, the largest first and the lowest index first
-  // among equals. A run only lowers distances, so it pushes the vertices it reached; an entry
+  // among equals. A run (or an isolated sample) only lowers distances, so it pushes the
+  // vertices it reached; an entry
   // whose distance is no longer its vertex's is dropped when it comes to the top. The heap is
   // rebuilt when the stale entries outgrow the mesh, so that a sample costs what its run swept,
   // not a scan of the mesh.
@@ -113,10 +113,7 @@ private:
     } else {
       for(int u : m_solver.reached_vertices())
         push(u);
-      for(int u : m_lowered)
-        push(u);
     }
-    m_lowered.clear();
     while(m_heap.front().distance != d[std::size_t(m_heap.front().vertex)]) {
       std::pop_heap(m_heap.begin(), m_heap.end());
       m_heap.pop_back();
@@ -131,7 +128,6 @@ private:
   std::vector<int> m_samples;
   int m_farthest = 0;
   std::vector<Candidate> m_heap;
-  std::vector<int> m_lowered; // set without a run (isolated points)
   Geodesic_statistics m_statistics;
 };
 

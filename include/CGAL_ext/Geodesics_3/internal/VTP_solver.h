@@ -134,17 +134,19 @@ public:
   }
 
   /// Sets the distance and nearest source of a point that no propagation reaches (a vertex in
-  /// no face, and the vertices glued to it), for the field the next run starts from.
+  /// no face, and the vertices glued to it), for the field the next run starts from; they count
+  /// as reached, as if a run had set them.
   void set_isolated_point(int v, double d, int source)
   {
     m_mesh.for_each_copy_of_point(v, [&](int u) {
+      note_reached(u);
       m_distance[u] = d;
       m_nearest_source[u] = source;
     });
   }
 
-  /// The vertices whose distance the last run set (some are +infinity again when beyond the
-  /// limit), each once.
+  /// The vertices whose distance the last run (or `set_isolated_point` since) set (some are
+  /// +infinity again when beyond the limit), each once.
   const std::vector<int>& reached_vertices() const { return m_reached; }
 
   /// Runs the propagation; distances beyond the max distance, or beyond the farthest stop
@@ -232,12 +234,17 @@ private:
       m_mesh.for_each_copy_of_point(v, [&](int u) { set_distance(u, d, source); });
   }
 
-  void set_distance(int v, double d, int source)
+  void note_reached(int v)
   {
     if(m_stamp[v] != m_run) {
       m_stamp[v] = m_run;
       m_reached.push_back(v);
     }
+  }
+
+  void set_distance(int v, double d, int source)
+  {
+    note_reached(v);
     m_distance[v] = d;
     m_nearest_source[v] = source;
     if(!m_is_taken[v] || m_emits_when_taken[v]) {
