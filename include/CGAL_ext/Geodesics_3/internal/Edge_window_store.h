@@ -117,7 +117,9 @@ public:
 
     std::vector<std::pair<double, double>>& pieces = out.new_pieces; // what the new window keeps
     std::vector<std::pair<double, double>>& kept = out.kept_pieces;  // what a stored window keeps
-    pieces.assign(1, std::make_pair(c.b0, c.b1));
+    // clear and push_back rather than assign(1, x): assign is an out-of-line call, per insertion.
+    pieces.clear();
+    pieces.emplace_back(c.b0, c.b1);
     Edge_window* before = nullptr; // the stored window before the current one
     Edge_window* w = m_edge[e];
     double cut[4];
@@ -132,7 +134,8 @@ public:
       if(s.b0 >= c.b1)
         break;
       const int m = compare_on_overlap(s, c, std::max(s.b0, c.b0), std::min(s.b1, c.b1), cut, winner);
-      kept.assign(1, std::make_pair(s.b0, s.b1));
+      kept.clear();
+      kept.emplace_back(s.b0, s.b1);
       bool changed = false;
       for(int i = 0; i + 1 < m; ++i) {
         if(winner[i] == 0)
