@@ -45,7 +45,8 @@ struct Pattern_patch
     return p;
   }
   /// the vertices of `range`, which must be connected through the mesh's edges; the centre is
-  /// the midpoint of the patch's medial axis
+  /// the patch's geodesic centroid (the vertex of least area-weighted mean squared geodesic
+  /// distance to the patch's vertices)
   /// \tparam VertexRange a range of `vertex_descriptor`
   /// \param range the vertices of the marked instance
   /// \return the patch
@@ -106,8 +107,9 @@ struct Repetitive_patterns
 /// a disk of its area: its radius for a geodesic disk, less for an elongated patch, whose samples
 /// then follow its width); the search radius is relative to the patch radius (the largest
 /// geodesic distance from the patch's centre to its vertices). The centre of a vertex-list patch
-/// is the midpoint of its medial axis (the landmark of the thesis). Instance centres are vertices;
-/// the correspondence maps the patch's samples to samples (to within about a spacing).
+/// is its geodesic centroid (on the medial axis of a symmetric patch: the landmark of the
+/// thesis). Instance centres are vertices; the correspondence maps the patch's samples to
+/// samples (to within about a spacing).
 ///
 /// \tparam ConcurrencyTag `CGAL::Sequential_tag` (the default), `CGAL::Parallel_tag` or
 ///         `CGAL::Parallel_if_available_tag`: the propagations and curvatures on TBB threads

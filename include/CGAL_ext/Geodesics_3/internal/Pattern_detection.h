@@ -219,6 +219,7 @@ private:
   void set_patch(const Pattern_patch_indices& patch)
   {
     const std::size_t n = m_vertex.size();
+    m_area = vertex_areas(m_tm, m_vpm, m_vim);
     m_in_patch.assign(n, false);
     double total = 0, longest = 0;
     std::size_t count = 0;
@@ -270,7 +271,6 @@ private:
     m_times->patch_radius = m_radius;
     // the size of the patch: the radius of a disk of its area (its radius when it is a disk,
     // less when it is elongated, whose samples and signatures follow its width)
-    m_area = vertex_areas(m_tm, m_vpm, m_vim);
     const std::vector<double>& area = m_area;
     double patch_area = 0;
     for(std::size_t v = 0; v < n; ++v)
@@ -360,12 +360,69 @@ private:
     for(std::size_t v = 0; v < m_vertex.size(); ++v)
       if(m_in_patch[v] && from_border[v] >= 0.8 * from_border[deepest] && from_ends[v] < from_ends[m_center])
         m_center = v;
+    m_center = patch_centroid(m_center, row_a);
     m_radius = 0;
     for(const auto& [v, d] : local_row(m_center, bound))
       if(m_in_patch[v])
         m_radius = std::max(m_radius, d);
     if(!(m_radius > 0))
       throw Geodesic_error("pattern detection: the patch has no extent (all its vertices are at one point)");
+  }
+
+  // The patch's geodesic centroid among its vertices: the one whose area-weighted mean squared
+  // distance to the patch's vertices is least (the centre of a symmetric patch whatever its
+  // shape, and it weighs every vertex, so that a border's jagged edge moves it little), by
+  // descent from `start`. Every patch vertex is within d(v, e) + (the farthest patch vertex
+  // from e) of v, `row_end` being the distances from a patch vertex e.
+  std::size_t patch_centroid(std::size_t start, const Row& row_end) const
+  {
+    std::vector<double> from_end(m_vertex.size(), std::numeric_limits<double>::infinity());
+    double reach = 0;
+    for(const auto& [v, d] : row_end)
+      if(m_in_patch[v]) {
+        from_end[v] = d;
+        reach = std::max(reach, d);
+      }
+    std::vector<bool> visited(m_vertex.size(), false);
+    std::size_t best = start;
+    double best_cost = std::numeric_limits<double>::infinity();
+    std::vector<std::size_t> tried{start};
+    visited[start] = true;
+    while(!tried.empty()) {
+      std::vector<vertex_descriptor> sources;
+      double radius = 0;
+      for(std::size_t v : tried) {
+        sources.push_back(m_vertex[v]);
+        radius = std::max(radius, from_end[v] + reach);
+      }
+      std::vector<double> cost(tried.size(), 0.0);
+      geodesic_sparse_distance_rows<Concurrency>(
+        m_tm, sources,
+        [&](std::size_t r, const Row& entries) {
+          for(const auto& [v, d] : entries)
+            if(m_in_patch[v])
+              cost[r] += m_area[v] * d * d;
+        },
+        solver_parameters(radius * (1 + 1e-9)));
+      std::size_t moved = none;
+      for(std::size_t r = 0; r < tried.size(); ++r)
+        if(cost[r] < best_cost) {
+          best_cost = cost[r];
+          moved = tried[r];
+        }
+      tried.clear();
+      if(moved == none)
+        break;
+      best = moved;
+      for(vertex_descriptor w : CGAL::vertices_around_target(m_vertex[best], m_tm)) {
+        const std::size_t wi = std::size_t(get(m_vim, w));
+        if(m_in_patch[wi] && !visited[wi]) {
+          visited[wi] = true;
+          tried.push_back(wi);
+        }
+      }
+    }
+    return best;
   }
 
   // Exact farthest-point samples, the patch's centre first, covering the mesh within the spacing.
