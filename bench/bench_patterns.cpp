@@ -65,11 +65,7 @@ int main(int argc, char** argv)
   const Score s = score(found.instances, scene.truth);
   if(std::getenv("BENCH_PATTERNS_OFFSETS"))
     for(const auto& instance : found.instances) {
-      std::size_t nearest = 0;
-      for(std::size_t i = 1; i < scene.truth.centres.size(); ++i)
-        if(CGAL::squared_distance(instance.center, scene.truth.centres[i]) <
-           CGAL::squared_distance(instance.center, scene.truth.centres[nearest]))
-          nearest = i;
+      const std::size_t nearest = scene.truth.nearest(instance.center);
       const double r = scene.truth.radii[nearest];
       const auto d = instance.center - scene.truth.centres[nearest];
       std::cerr << "planted " << nearest << " offset/radius " << std::sqrt(d.squared_length()) / r << " (" << d.x() / r

@@ -189,6 +189,16 @@ struct Truth
 {
   std::vector<Point> centres;
   std::vector<double> radii;
+
+  /// The planted instance whose centre is nearest to `p`.
+  std::size_t nearest(const Point& p) const
+  {
+    std::size_t best = 0;
+    for(std::size_t i = 1; i < centres.size(); ++i)
+      if(CGAL::squared_distance(p, centres[i]) < CGAL::squared_distance(p, centres[best]))
+        best = i;
+    return best;
+  }
 };
 
 /// How found instances compare with the planted ones: a found centre is right when it lies

@@ -944,6 +944,9 @@ private:
   // one batch; a row gives both the signature and the distances.
   void place_centres()
   {
+    // the signature term weighs more than the distances: the images the distances are measured
+    // to are samples, each up to a spacing off (the weight's sweep: doc/experiments.md)
+    constexpr double centre_signature_weight = 4;
     const std::size_t n = m_instances.size();
     const std::size_t k = m_patch_sample.size();
     if(n < 2)
@@ -1006,7 +1009,7 @@ private:
             squares += (it->second - want) * (it->second - want);
             ++counted;
           }
-          const double c = signature_distance(target, sums.signature(radius, rings)) / m_signature_norm +
+          const double c = centre_signature_weight * signature_distance(target, sums.signature(radius, rings)) / m_signature_norm +
                            (counted ? std::sqrt(squares / double(counted)) / (m_size * scale) : 0.0);
           if(c < best_cost[a]) {
             best_cost[a] = c;
