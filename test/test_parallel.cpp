@@ -644,7 +644,9 @@ TEST(Geodesic_voronoi_parallel, the_same_diagram_for_every_thread_count)
 TEST(Distance_matrix, rows_are_single_source_solves_in_order_for_every_thread_count)
 {
   const Mesh& m = test_mesh("elephant");
-  const std::vector<Vertex> sources = spread_vertices(m, 9);
+  // more sources than the first batch (4 a thread) holds: the later batches are larger, their
+  // rows reused
+  const std::vector<Vertex> sources = spread_vertices(m, 30);
   std::vector<std::vector<double>> expected;
   for(Vertex s : sources)
     expected.push_back(solve(m, s));

@@ -24,11 +24,15 @@ namespace internal {
 /// One entry of a sparse row: a vertex index and its distance.
 typedef std::pair<std::size_t, double> Row_entry;
 
+/// The memory the rows of a batch may take (`for_each_row`).
+constexpr std::size_t row_budget_bytes = std::size_t(64) << 20;
+
 /// Calls `solve(i, solver)` for every source i, each a sequential VTP run on a solver of the
 /// calling thread (kept and reset between rows: a row costs what it sweeps), in parallel across
 /// sources; then `hand_over(i, solver_result)` in source order, from the calling thread, with
-/// what `solve` made of row i. A batch of rows is solved, then handed over: a few rows per
-/// thread keep the threads busy and the memory small.
+/// what `solve` made of row i. A batch of rows is solved, then handed over: as many rows as fit
+/// `row_budget_bytes` at the size of the rows made so far, between 4 and 64 per thread (the
+/// threads wait for the batch's last row: the longer the batch, the less they wait).
 template <bool parallel, class Row, class TriangleMesh, class Sources, class MakeRow, class HandOver,
           class NamedParameters>
 void for_each_row(const TriangleMesh& tm, const Sources& sources, const NamedParameters& np, MakeRow make_row,
@@ -45,11 +49,15 @@ void for_each_row(const TriangleMesh& tm, const Sources& sources, const NamedPar
     throw Geodesic_error("no source was given");
 
   run_in_arena<parallel>(settings.number_of_threads, [&] {
-    std::vector<std::unique_ptr<VTP_solver>> solvers(parallel ? arena_concurrency() : 1);
-    const std::size_t batch = parallel ? 4 * arena_concurrency() : 1;
-    std::vector<Row> rows(std::min(batch, points.size()));
-    for(std::size_t first = 0; first < points.size(); first += batch) {
-      const std::size_t n = std::min(batch, points.size() - first);
+    const std::size_t threads = parallel ? arena_concurrency() : 1;
+    std::vector<std::unique_ptr<VTP_solver>> solvers(threads);
+    std::size_t batch = parallel ? 4 * threads : 1;
+    std::size_t rows_made = 0, bytes_made = 0;
+    std::vector<Row> rows;
+    for(std::size_t first = 0, n = 0; first < points.size(); first += n) {
+      n = std::min(batch, points.size() - first);
+      if(rows.size() < n)
+        rows.resize(n);
       for_each_index(parallel, n, 1, [&](std::size_t j, std::size_t slot) {
         std::unique_ptr<VTP_solver>& solver = solvers[slot];
         if(!solver)
@@ -59,8 +67,14 @@ void for_each_row(const TriangleMesh& tm, const Sources& sources, const NamedPar
         solver->run();
         make_row(*solver, mesh, rows[j]);
       });
-      for(std::size_t j = 0; j < n; ++j)
+      for(std::size_t j = 0; j < n; ++j) {
+        bytes_made += rows[j].size() * sizeof(typename Row::value_type);
         hand_over(first + j, static_cast<const Row&>(rows[j]));
+      }
+      rows_made += n;
+      if(parallel)
+        batch = std::clamp<std::size_t>(row_budget_bytes * rows_made / std::max<std::size_t>(bytes_made, 1),
+                                        4 * threads, 64 * threads);
     }
   });
 }
