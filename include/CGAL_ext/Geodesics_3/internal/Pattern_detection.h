@@ -129,6 +129,7 @@ public:
     report(Step::centres, 0);
     start = Clock::now();
     place_centres();
+    merge_overlapping_instances();
     m_times->optimization_seconds += seconds_since(start);
     report(Step::arrangement, 0);
     start = Clock::now();
@@ -146,6 +147,7 @@ private:
     std::size_t scale_step = 0;
     std::size_t center_sample = 0;
     std::size_t center_vertex = 0;
+    double center_cost = 0; // what place_centres minimised at the centre
   };
 
   enum class Step { sampling, signatures, growing, centres, arrangement };
@@ -1027,6 +1029,7 @@ private:
         }
         m_instances[a].center_vertex = best[a];
         cost[a] = best_cost[a];
+        m_instances[a].center_cost = cost[a];
         for(vertex_descriptor w : CGAL::vertices_around_target(m_vertex[best[a]], m_tm)) {
           const std::size_t wi = std::size_t(get(m_vim, w));
           if(std::find(visited[a].begin(), visited[a].end(), wi) == visited[a].end()) {
@@ -1037,6 +1040,50 @@ private:
         }
       }
     }
+  }
+
+  // Instances are accepted apart (each centre farther than the mean of the two sizes from every
+  // other's) with centres at samples; the centres' descent may bring two of them onto one
+  // instance. Of two whose centres are now that close, the one whose centre is less like the
+  // patch's (the cost the descent minimised) goes; never the patch.
+  void merge_overlapping_instances()
+  {
+    const std::size_t n = m_instances.size();
+    if(n < 2)
+      return;
+    const auto size = [&](std::size_t a) { return m_size * m_scales[m_instances[a].scale_step]; };
+    double largest = 0;
+    std::vector<vertex_descriptor> sources;
+    for(std::size_t a = 0; a < n; ++a) {
+      largest = std::max(largest, size(a));
+      sources.push_back(m_vertex[m_instances[a].center_vertex]);
+    }
+    std::vector<std::size_t> instance_at(m_vertex.size(), none);
+    for(std::size_t a = 0; a < n; ++a)
+      instance_at[m_instances[a].center_vertex] = a;
+    const auto cost = [&](std::size_t a) { return a == 0 ? -1.0 : m_instances[a].center_cost; };
+    std::vector<bool> dropped(n, false);
+    geodesic_sparse_distance_rows<Concurrency>(
+      m_tm, sources,
+      [&](std::size_t a, const Row& entries) {
+        for(const auto& [v, d] : entries) {
+          const std::size_t b = instance_at[v];
+          if(b == none || b == a || d >= 0.5 * (size(a) + size(b)))
+            continue;
+          // rows come in order: a decision for a pair is taken once, at the first of the two
+          if(b > a && !dropped[a] && !dropped[b])
+            dropped[cost(a) <= cost(b) ? b : a] = true;
+        }
+      },
+      solver_parameters(largest));
+    std::size_t kept = 0;
+    for(std::size_t a = 0; a < n; ++a)
+      if(!dropped[a]) {
+        if(kept != a)
+          m_instances[kept] = std::move(m_instances[a]);
+        ++kept;
+      }
+    m_instances.resize(kept);
   }
 
   std::vector<Detected_instance> collect_instances() const
