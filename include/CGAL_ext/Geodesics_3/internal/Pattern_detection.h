@@ -371,6 +371,63 @@ private:
       throw Geodesic_error("pattern detection: the patch has no extent (all its vertices are at one point)");
   }
 
+  // A descent over vertices for several walkers at once (the patch's centroid, the instances'
+  // centres). Walker w starts at start[w]; every step evaluates the vertices tried, one local
+  // row of the largest `radius(vertex)` among them each, in one batch: first the starts, then
+  // the unvisited neighbours of each moving walker's best vertex that `may_visit(w, vertex)`
+  // lets in. `cost(w, vertex, row)` is a vertex's cost; a walker stops when none of its vertices
+  // tried costs less than its best, and all stop after `max_steps`. Returns each walker's best
+  // vertex and its cost.
+  template <class Radius, class Cost, class MayVisit>
+  std::vector<std::pair<std::size_t, double>> descend(const std::vector<std::size_t>& start, const Radius& radius,
+                                                      const Cost& cost, const MayVisit& may_visit,
+                                                      int max_steps) const
+  {
+    const std::size_t n = start.size();
+    std::vector<std::pair<std::size_t, double>> best(n);
+    std::vector<std::vector<std::size_t>> visited(n);
+    std::vector<std::pair<std::size_t, std::size_t>> tried; // (walker, vertex)
+    for(std::size_t w = 0; w < n; ++w) {
+      best[w] = {start[w], std::numeric_limits<double>::infinity()};
+      visited[w].push_back(start[w]);
+      tried.emplace_back(w, start[w]);
+    }
+    for(int step = 0; step < max_steps && !tried.empty(); ++step) {
+      std::vector<vertex_descriptor> sources;
+      double row_radius = 0;
+      for(const auto& t : tried) {
+        sources.push_back(m_vertex[t.second]);
+        row_radius = std::max(row_radius, radius(t.second));
+      }
+      std::vector<bool> moved(n, false);
+      geodesic_sparse_distance_rows<Concurrency>(
+        m_tm, sources,
+        [&](std::size_t r, const Row& entries) {
+          const auto [w, v] = tried[r];
+          const double c = cost(w, v, entries);
+          if(c < best[w].second) {
+            best[w] = {v, c};
+            moved[w] = true;
+          }
+        },
+        solver_parameters(row_radius));
+      tried.clear();
+      for(std::size_t w = 0; w < n; ++w) {
+        if(!moved[w])
+          continue;
+        for(vertex_descriptor u : CGAL::vertices_around_target(m_vertex[best[w].first], m_tm)) {
+          const std::size_t ui = std::size_t(get(m_vim, u));
+          if(std::find(visited[w].begin(), visited[w].end(), ui) == visited[w].end()) {
+            visited[w].push_back(ui);
+            if(may_visit(w, ui))
+              tried.emplace_back(w, ui);
+          }
+        }
+      }
+    }
+    return best;
+  }
+
   // The patch's geodesic centroid among its vertices: the one whose area-weighted mean squared
   // distance to the patch's vertices is least (the centre of a symmetric patch whatever its
   // shape, and it weighs every vertex, so that a border's jagged edge moves it little), by
@@ -385,46 +442,18 @@ private:
         from_end[v] = d;
         reach = std::max(reach, d);
       }
-    std::vector<bool> visited(m_vertex.size(), false);
-    std::size_t best = start;
-    double best_cost = std::numeric_limits<double>::infinity();
-    std::vector<std::size_t> tried{start};
-    visited[start] = true;
-    while(!tried.empty()) {
-      std::vector<vertex_descriptor> sources;
-      double radius = 0;
-      for(std::size_t v : tried) {
-        sources.push_back(m_vertex[v]);
-        radius = std::max(radius, from_end[v] + reach);
-      }
-      std::vector<double> cost(tried.size(), 0.0);
-      geodesic_sparse_distance_rows<Concurrency>(
-        m_tm, sources,
-        [&](std::size_t r, const Row& entries) {
-          for(const auto& [v, d] : entries)
-            if(m_in_patch[v])
-              cost[r] += m_area[v] * d * d;
-        },
-        solver_parameters(radius * (1 + 1e-9)));
-      std::size_t moved = none;
-      for(std::size_t r = 0; r < tried.size(); ++r)
-        if(cost[r] < best_cost) {
-          best_cost = cost[r];
-          moved = tried[r];
-        }
-      tried.clear();
-      if(moved == none)
-        break;
-      best = moved;
-      for(vertex_descriptor w : CGAL::vertices_around_target(m_vertex[best], m_tm)) {
-        const std::size_t wi = std::size_t(get(m_vim, w));
-        if(m_in_patch[wi] && !visited[wi]) {
-          visited[wi] = true;
-          tried.push_back(wi);
-        }
-      }
-    }
-    return best;
+    return descend(
+             {start}, [&](std::size_t v) { return (from_end[v] + reach) * (1 + 1e-9); },
+             [&](std::size_t, std::size_t, const Row& entries) {
+               double c = 0;
+               for(const auto& [v, d] : entries)
+                 if(m_in_patch[v])
+                   c += m_area[v] * d * d;
+               return c;
+             },
+             [&](std::size_t, std::size_t v) { return bool(m_in_patch[v]); }, std::numeric_limits<int>::max())
+      .front()
+      .first;
   }
 
   // Exact farthest-point samples, the patch's centre first, covering the mesh within the spacing.
@@ -941,9 +970,8 @@ private:
   // images of the patch samples best agree with the patch centre's distances to them (the root
   // mean square of the differences over the images within a row, relative to the patch's
   // size): the signature alone hardly changes along the axis of an elongated instance, the
-  // distances alone are off by up to a spacing each. Every step evaluates the unvisited
-  // neighbours of the current vertex of every instance still moving, one local row each, in
-  // one batch; a row gives both the signature and the distances.
+  // distances alone are off by up to a spacing each. One `descend` for all instances: a row
+  // gives both the signature and the distances.
   void place_centres()
   {
     // the signature term weighs more than the distances: the images the distances are measured
@@ -960,85 +988,53 @@ private:
     // elongated patch, those along its axis, beyond the signature's disk, tell the most)
     const double reach = std::max(signature_radius, m_radius + m_spacing) * m_scales.back();
 
-    std::vector<double> cost(n, std::numeric_limits<double>::infinity());
-    std::vector<bool> moving(n, false);
-    std::vector<std::vector<std::size_t>> visited(n);
     std::vector<Row> allowed(n); // the vertices within two spacings of the landmark's image
-    std::vector<std::pair<std::size_t, std::size_t>> tried; // (instance, vertex)
-    for(std::size_t a = 1; a < n; ++a) {
-      moving[a] = true;
-      visited[a].push_back(m_instances[a].center_vertex);
-      tried.emplace_back(a, m_instances[a].center_vertex);
-    }
     const auto is_allowed = [&](std::size_t a, std::size_t v) {
       return std::binary_search(allowed[a].begin(), allowed[a].end(),
                                 std::make_pair(v, -std::numeric_limits<double>::infinity()),
                                 [](const auto& x, const auto& y) { return x.first < y.first; });
     };
-    const int max_steps = 2 + int(std::ceil(3 * m_spacing * m_scales.back() / std::max(m_mean_edge, 1e-300)));
-    for(int step = 0; step < max_steps && !tried.empty(); ++step) {
-      std::vector<vertex_descriptor> sources;
-      for(const auto& t : tried)
-        sources.push_back(m_vertex[t.second]);
-      std::vector<std::size_t> best(n, none);
-      std::vector<double> best_cost = cost;
-      geodesic_sparse_distance_rows<Concurrency>(
-        m_tm, sources,
-        [&](std::size_t r, const Row& entries) {
-          const std::size_t a = tried[r].first;
-          const Instance& instance = m_instances[a];
-          const double scale = m_scales[instance.scale_step];
-          if(step == 0)
-            for(const auto& entry : entries)
-              if(entry.second <= 2 * m_spacing * scale)
-                allowed[a].push_back(entry);
-          const double radius = signature_radius * scale;
-          Ring_sums sums(m_rings.front().bands(), m_band_width);
-          for(const auto& [v, d] : entries)
-            if(d < radius)
-              sums.add(d, m_area[v], m_curvature[v]);
-          double squares = 0;
-          std::size_t counted = 0;
-          for(std::size_t i = 0; i < k; ++i) {
-            const std::size_t q = instance.correspondence.image[i];
-            if(q == Pattern_correspondence::unmapped)
-              continue;
-            const auto it = std::lower_bound(entries.begin(), entries.end(),
-                                             std::make_pair(m_sample_vertex[q], -std::numeric_limits<double>::infinity()));
-            if(it == entries.end() || it->first != m_sample_vertex[q])
-              continue;
-            const double want = patch_distance(m_landmark, i) * scale;
-            squares += (it->second - want) * (it->second - want);
-            ++counted;
-          }
-          const double c = centre_signature_weight * signature_distance(target, sums.signature(radius, rings)) / m_signature_norm +
-                           (counted ? std::sqrt(squares / double(counted)) / (m_size * scale) : 0.0);
-          if(c < best_cost[a]) {
-            best_cost[a] = c;
-            best[a] = tried[r].second;
-          }
-        },
-        solver_parameters(reach));
-      tried.clear();
-      for(std::size_t a = 1; a < n; ++a) {
-        if(!moving[a])
+    const auto cost = [&](std::size_t a, const Row& entries) {
+      const Instance& instance = m_instances[a];
+      const double scale = m_scales[instance.scale_step];
+      if(allowed[a].empty()) // the first row of the instance: its start's
+        for(const auto& entry : entries)
+          if(entry.second <= 2 * m_spacing * scale)
+            allowed[a].push_back(entry);
+      const double radius = signature_radius * scale;
+      Ring_sums sums(m_rings.front().bands(), m_band_width);
+      for(const auto& [v, d] : entries)
+        if(d < radius)
+          sums.add(d, m_area[v], m_curvature[v]);
+      double squares = 0;
+      std::size_t counted = 0;
+      for(std::size_t i = 0; i < k; ++i) {
+        const std::size_t q = instance.correspondence.image[i];
+        if(q == Pattern_correspondence::unmapped)
           continue;
-        if(best[a] == none) {
-          moving[a] = false;
+        const auto it = std::lower_bound(entries.begin(), entries.end(),
+                                         std::make_pair(m_sample_vertex[q], -std::numeric_limits<double>::infinity()));
+        if(it == entries.end() || it->first != m_sample_vertex[q])
           continue;
-        }
-        m_instances[a].center_vertex = best[a];
-        cost[a] = best_cost[a];
-        m_instances[a].center_cost = cost[a];
-        for(vertex_descriptor w : CGAL::vertices_around_target(m_vertex[best[a]], m_tm)) {
-          const std::size_t wi = std::size_t(get(m_vim, w));
-          if(std::find(visited[a].begin(), visited[a].end(), wi) == visited[a].end()) {
-            visited[a].push_back(wi);
-            if(is_allowed(a, wi))
-              tried.emplace_back(a, wi);
-          }
-        }
+        const double want = patch_distance(m_landmark, i) * scale;
+        squares += (it->second - want) * (it->second - want);
+        ++counted;
       }
+      return centre_signature_weight * signature_distance(target, sums.signature(radius, rings)) / m_signature_norm +
+             (counted ? std::sqrt(squares / double(counted)) / (m_size * scale) : 0.0);
+    };
+    // the walkers are the instances but the patch: walker w is instance w + 1
+    std::vector<std::size_t> start;
+    for(std::size_t a = 1; a < n; ++a)
+      start.push_back(m_instances[a].center_vertex);
+    const int max_steps = 2 + int(std::ceil(3 * m_spacing * m_scales.back() / std::max(m_mean_edge, 1e-300)));
+    const auto placed = descend(
+      start, [&](std::size_t) { return reach; },
+      [&](std::size_t w, std::size_t, const Row& entries) { return cost(w + 1, entries); },
+      [&](std::size_t w, std::size_t v) { return is_allowed(w + 1, v); }, max_steps);
+    for(std::size_t a = 1; a < n; ++a) {
+      m_instances[a].center_vertex = placed[a - 1].first;
+      m_instances[a].center_cost = placed[a - 1].second;
     }
   }
 
