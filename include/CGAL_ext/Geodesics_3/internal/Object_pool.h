@@ -5,8 +5,12 @@
 #include <CGAL_ext/Geodesics_3/internal/Parallel_for.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cstddef>
+#include <cstdint>
 #include <memory>
+#include <new>
+#include <stdexcept>
 #include <vector>
 
 namespace CGAL_ext {
@@ -106,6 +110,120 @@ private:
     std::size_t used = block_size;
     std::ptrdiff_t live = 0; // may go below zero in one slot: windows are freed where they are used
   };
+  std::vector<Slot> m_slots = std::vector<Slot>(1);
+};
+
+/// The same storage for objects linked by a 32-bit index (`std::uint32_t next`, `nil` at the
+/// end) instead of a pointer, so that an object of 64 bytes and its link fit one cache line.
+/// An index names a block of the pool and a place in it; blocks are numbered across slots (the
+/// number taken atomically) and never move, so a thread may follow links into blocks that
+/// another thread carved, once the step that linked them has ended.
+template <class T>
+class Indexed_pool
+{
+public:
+  static constexpr std::uint32_t nil = 0xFFFFFFFFu;
+  static constexpr unsigned block_bits = 12;
+  static constexpr std::uint32_t block_size = 1u << block_bits;
+  static constexpr std::uint32_t max_blocks = 1u << (32 - block_bits);
+
+  // The table of blocks is left uninitialized: only the entries of blocks made are read, and
+  // the memory of the rest is never touched.
+  Indexed_pool() : m_blocks(new T*[max_blocks]) {}
+
+  /// See `Object_pool::use_one_slot_per_thread()`.
+  std::size_t use_one_slot_per_thread(bool parallel)
+  {
+    m_slots.resize(parallel ? arena_concurrency() : 1);
+    return parallel ? this_thread_slot() : 0;
+  }
+
+  T& operator[](std::uint32_t i) const { return m_blocks[i >> block_bits][i & (block_size - 1)]; }
+
+  /// An object of the slot set to `value`; returns it, and its index in `index`.
+  T* allocate(std::size_t slot, const T& value, std::uint32_t& index)
+  {
+    Slot& s = m_slots[slot];
+    T* p;
+    if(s.free != nil) {
+      index = s.free;
+      p = &(*this)[index];
+      s.free = p->next;
+    } else {
+      if(s.used == block_size)
+        new_block(s);
+      index = (s.block << block_bits) | s.used;
+      p = s.block_start + s.used++;
+    }
+    ++s.live;
+    *p = value;
+    return p;
+  }
+  /// Frees the objects from `i` on along their links.
+  void release_chain(std::size_t slot, std::uint32_t i)
+  {
+    while(i != nil) {
+      T& object = (*this)[i];
+      const std::uint32_t next = object.next;
+      release_one(slot, i, object);
+      i = next;
+    }
+  }
+  /// Frees `object`, of index `i`, alone, whatever it links to.
+  void release_one(std::size_t slot, std::uint32_t i, T& object)
+  {
+    Slot& s = m_slots[slot];
+    object.next = s.free;
+    s.free = i;
+    --s.live;
+  }
+  /// Objects alive (exact between parallel steps).
+  std::size_t live() const
+  {
+    std::ptrdiff_t n = 0;
+    for(const Slot& s : m_slots)
+      n += s.live;
+    return std::size_t(n);
+  }
+  std::size_t bytes() const { return std::size_t(m_block_count.load()) * block_size * sizeof(T); }
+
+private:
+  // Objects of a cache line start on one.
+  static constexpr std::size_t block_alignment = 64;
+  struct Free_block
+  {
+    void operator()(T* block) const
+    {
+      std::destroy_n(block, block_size);
+      ::operator delete(block, std::align_val_t(block_alignment));
+    }
+  };
+  struct Slot;
+  void new_block(Slot& s)
+  {
+    const std::uint32_t b = m_block_count.fetch_add(1, std::memory_order_relaxed);
+    if(b >= max_blocks)
+      throw std::length_error("geodesic windows: more than 2^32 windows alive at once");
+    T* block = static_cast<T*>(::operator new(sizeof(T) * block_size, std::align_val_t(block_alignment)));
+    std::uninitialized_value_construct_n(block, block_size);
+    s.blocks.emplace_back(block);
+    m_blocks[b] = block;
+    s.block = b;
+    s.block_start = block;
+    s.used = 0;
+  }
+
+  struct alignas(64) Slot
+  {
+    std::vector<std::unique_ptr<T, Free_block>> blocks; // the blocks this slot carved
+    std::uint32_t free = nil;
+    std::uint32_t block = 0; // the block being carved
+    T* block_start = nullptr;
+    std::uint32_t used = block_size;
+    std::ptrdiff_t live = 0; // may go below zero in one slot: objects are freed where they are used
+  };
+  std::unique_ptr<T*[]> m_blocks;
+  std::atomic<std::uint32_t> m_block_count{0};
   std::vector<Slot> m_slots = std::vector<Slot>(1);
 };
 

@@ -21,16 +21,20 @@ namespace CGAL_ext {
 namespace Geodesics_3 {
 namespace internal {
 
+/// Where VTP keeps the windows of its lists.
+typedef Indexed_pool<Window> Window_pool;
+typedef Window_chain<Window_pool> Window_list;
+
 /// One window list taken across its triangle: the work of one task of the propagation step.
 /// `propagate()` fills it reading only shared state that no task writes; `merge()` applies it.
 struct List_task
 {
   int halfedge = -1;
-  Listed_window* input = nullptr; // the list's windows, detached from it
+  std::uint32_t input = Window_pool::nil; // the list's windows, detached from it
   double apex_distance = 0; // shortest path to the apex found through the list
   int apex_source = -1;     // the source of that path
   std::vector<Window> windows;  // the input, trimmed and pruned
-  Window_chain to_ac, to_cb;    // children for the lists across A->C and C->B
+  Window_list to_ac, to_cb;    // children for the lists across A->C and C->B
 };
 
 /// Geodesic distances from any number of sources by vertex-oriented triangle propagation
@@ -61,8 +65,6 @@ struct List_task
 class VTP_solver : public Solver_base
 {
 public:
-  typedef Object_pool<Listed_window> Window_pool;
-
   /// The guard band of the approximation, in mean edge lengths (thesis 4.3.2, lambda_g).
   static constexpr double approximation_guard = 8.;
   /// Buckets are h / tau wide (thesis 4.2.2); a few slivers must not make them vanishingly thin.
@@ -78,7 +80,7 @@ public:
     , m_is_taken(mesh.number_of_vertices, 0)
     , m_emits_when_taken(mesh.is_pseudo_source)
     , m_is_stop(mesh.number_of_vertices, 0)
-    , m_head(mesh.number_of_halfedges(), nullptr)
+    , m_head(mesh.number_of_halfedges(), Window_pool::nil)
     , m_is_scheduled(mesh.number_of_halfedges(), 0)
     , m_is_waiting(mesh.number_of_halfedges(), 0)
     , m_buckets(mesh.mean_edge_length / std::min(std::max(1., mesh.mean_anisotropy), max_anisotropy))
@@ -321,7 +323,7 @@ private:
 
   void schedule(int h)
   {
-    if(m_head[h] && !m_is_scheduled[h]) {
+    if(m_head[h] != Window_pool::nil && !m_is_scheduled[h]) {
       m_is_scheduled[h] = 1;
       m_scheduled_lists.push_back(h);
     }
@@ -331,7 +333,7 @@ private:
   // when it lies in the swept region (or when every list is being flushed); otherwise it
   // waits. The order of windows in a list does not matter: they are sorted when the list is
   // propagated.
-  void add_chain(int h, const Window_chain& chain)
+  void add_chain(int h, const Window_list& chain)
   {
     chain.tail->next = m_head[h];
     m_head[h] = chain.head;
@@ -348,8 +350,8 @@ private:
   {
     Window w = list_window(geometry, source);
     if(keep_window(w, h, m_distance[m_mesh.source(h)], m_distance[m_mesh.target(h)])) {
-      Window_chain chain;
-      chain.push_back(m_pool.allocate(m_main_slot, Listed_window{w, nullptr}));
+      Window_list chain;
+      chain.push_back(m_pool, m_main_slot, w);
       add_chain(h, chain);
       note_live_windows(m_pool);
     }
@@ -421,9 +423,10 @@ private:
     // are forgotten here, so that each reset costs the size of the wavefront, not of its history.
     std::size_t kept = 0;
     for(int h : m_waiting_lists) {
-      if(m_head[h] && m_distance[m_mesh.source(h)] <= guard && m_distance[m_mesh.target(h)] <= guard)
+      if(m_head[h] != Window_pool::nil && m_distance[m_mesh.source(h)] <= guard &&
+         m_distance[m_mesh.target(h)] <= guard)
         clear_list(h);
-      if(m_head[h] && !inside_swept_region(h))
+      if(m_head[h] != Window_pool::nil && !inside_swept_region(h))
         m_waiting_lists[kept++] = h;
       else
         m_is_waiting[h] = 0;
@@ -437,7 +440,7 @@ private:
   void clear_list(int h)
   {
     m_pool.release_chain(m_main_slot, m_head[h]);
-    m_head[h] = nullptr;
+    m_head[h] = Window_pool::nil;
   }
 
   // Propagates the scheduled lists, and the lists they schedule, until none is left.
@@ -503,7 +506,7 @@ private:
     m_is_scheduled[h] = 0;
     task.halfedge = h;
     task.input = m_head[h];
-    m_head[h] = nullptr;
+    m_head[h] = Window_pool::nil;
   }
 
   // Takes the windows of the task's list across the face of its half-edge. Reads the mesh and
@@ -521,15 +524,16 @@ private:
     const Halfedge_frame& f = m_mesh.frame[h];
     const double d_from = m_distance[m_mesh.source(h)];
     const double d_to = m_distance[m_mesh.target(h)];
-    for(Listed_window* p = task.input; p;) {
-      Listed_window* next = p->next;
-      windows.push_back(p->window);
+    for(std::uint32_t i = task.input; i != Window_pool::nil;) {
+      Window& listed = m_pool[i];
+      const std::uint32_t next = listed.next;
+      windows.push_back(listed);
       if(!keep_window(windows.back(), h, d_from, d_to))
         windows.pop_back();
-      m_pool.release_one(slot, p);
-      p = next;
+      m_pool.release_one(slot, i, listed);
+      i = next;
     }
-    task.input = nullptr;
+    task.input = Window_pool::nil;
     if(windows.empty())
       return;
     prune_pairs(windows);
@@ -556,7 +560,7 @@ private:
                       Window child = list_window(geometry, w.source);
                       // A -> C runs from the source of h to the apex, C -> B from the apex to the target
                       if(onto_ac ? keep_window(child, g, d_from, d_apex) : keep_window(child, g, d_apex, d_to))
-                        (onto_ac ? task.to_ac : task.to_cb).push_back(m_pool.allocate(slot, Listed_window{child, nullptr}));
+                        (onto_ac ? task.to_ac : task.to_cb).push_back(m_pool, slot, child);
                     });
     }
   }
@@ -606,7 +610,7 @@ private:
   std::vector<std::uint8_t> m_is_taken;
   std::vector<std::uint8_t> m_emits_when_taken; // pseudo-source, source, or made a source by a reset
   std::vector<std::uint8_t> m_is_stop;
-  std::vector<Listed_window*> m_head; // the list of each half-edge
+  std::vector<std::uint32_t> m_head; // the first window of the list of each half-edge
   std::vector<std::uint8_t> m_is_scheduled; // per half-edge: its list is in m_scheduled_lists
   std::vector<std::uint8_t> m_is_waiting;   // per half-edge: its list is in m_waiting_lists
   std::vector<int> m_waiting_lists;   // lists holding windows outside the swept region

@@ -30,24 +30,18 @@ struct Window_geometry
 
 /// A window of a list (VTP keeps its windows in lists per half-edge), with the distances at
 /// the ends of its interval, kept equal to `distance_at(b0)` and `distance_at(b1)` so that
-/// trimming and clipping reuse them, and the index of the source its paths come from: 64 bytes,
-/// the size of a cache line, which the hot loops (sorting and clipping a list) work on. (Not
-/// `alignas(64)`: lists are sorted by value, and GCC notes at every such call that passing
-/// over-aligned values changed ABI.)
+/// trimming and clipping reuse them, the index of the source its paths come from, and the index
+/// of the next window of its list in the pool that holds it: 64 bytes, the size of a cache line,
+/// which the hot loops (walking, sorting and clipping a list) work on. (Not `alignas(64)`: lists
+/// are sorted by value, and GCC notes at every such call that passing over-aligned values
+/// changed ABI; the pool's blocks are aligned.)
 struct Window : Window_geometry
 {
   double d0, d1;
   int source;
-  int padding = 0; // named: with unnamed padding GCC sorted windows at a higher cost (doc/experiments.md)
+  std::uint32_t next = 0xFFFFFFFFu;
 };
 static_assert(sizeof(Window) == 64, "a list window is one cache line");
-
-/// A window as a list holds it, linked to the next window of the list.
-struct Listed_window
-{
-  Window window;
-  Listed_window* next;
-};
 
 /// Planar length of (x, y). std::hypot guards against overflow at a large cost; coordinates of
 /// a mesh are far from that range.
@@ -224,6 +218,20 @@ inline int compare_on_overlap(const Window_geometry& w0, const Window_geometry& 
     winner[0] = 1;
     return 2;
   }
+  // f = D1 - D0 is monotone on either side of the point where the line through the two
+  // pseudo-sources meets the edge (where f' = 0: the rays from both to a point of the edge have
+  // the same direction only there). On an overlap that does not hold that point, f has one sign
+  // throughout when it has that sign at an end and not the other at the other end.
+  const double f_lo = lo1 - lo0, f_hi = hi1 - hi0;
+  if((f_lo > 0 && f_hi >= 0) || (f_lo >= 0 && f_hi > 0) || (f_lo < 0 && f_hi <= 0) || (f_lo <= 0 && f_hi < 0)) {
+    const double dx = w1.sx - w0.sx, dy = w1.sy - w0.sy;
+    const double side_lo = dy * (lo - w0.sx) + dx * w0.sy, side_hi = dy * (hi - w0.sx) + dx * w0.sy;
+    if(!(side_lo * side_hi < 0)) {
+      cut[1] = hi;
+      winner[0] = (f_lo < 0 || f_hi < 0) ? 1 : 0;
+      return 2;
+    }
+  }
   int n = 1 + equal_distance_points(w0, w1, lo, hi, cut + 1);
   cut[n++] = hi;
   // Winner of each piece between consecutive cut points. On a tie w0 wins: two different
@@ -374,20 +382,29 @@ void make_children(const Window_geometry& w, const Face_crossing& c, double ac_e
   }
 }
 
-/// Windows linked through `next`, with their last one and their number.
+/// Windows of `Pool` linked through `next`, with their last one and their number.
+template <class Pool>
 struct Window_chain
 {
-  Listed_window* head = nullptr;
-  Listed_window* tail = nullptr;
+  std::uint32_t head = Pool::nil;
+  Window* tail = nullptr;
   std::size_t size = 0;
 
-  void clear() { head = tail = nullptr, size = 0; }
-  void push_back(Listed_window* w)
+  void clear() { head = Pool::nil, tail = nullptr, size = 0; }
+  /// Appends the window `w` of index `index`.
+  void push_back(Window* w, std::uint32_t index)
   {
-    w->next = nullptr;
-    (tail ? tail->next : head) = w;
+    w->next = Pool::nil;
+    (tail ? tail->next : head) = index;
     tail = w;
     ++size;
+  }
+  /// Appends a new window of `pool` set to `w`.
+  void push_back(Pool& pool, std::size_t slot, const Window& w)
+  {
+    std::uint32_t index;
+    Window* p = pool.allocate(slot, w, index);
+    push_back(p, index);
   }
 };
 
