@@ -583,7 +583,7 @@ private:
   {
     if(windows.size() < 2)
       return;
-    std::sort(windows.begin(), windows.end(), [](const Window& a, const Window& b) { return a.b0 < b.b0; });
+    sort_by_start(windows);
     const std::size_t n = windows.size();
     for(std::size_t i = 0; i < n; ++i) {
       Window& wi = windows[i];
@@ -603,6 +603,32 @@ private:
     windows.erase(std::remove_if(windows.begin(), windows.end(), [](const Window& w) { return !(w.b1 > w.b0); }),
                   windows.end());
   }
+
+  // Sorts a list's windows by where they start. A list is a few chains of children, each in
+  // the order of its parent list, that overlap little: an insertion sort moves few windows. Past
+  // a budget of moves (lists of many interleaved chains), the list is sorted the general way.
+  static void sort_by_start(std::vector<Window>& windows)
+  {
+    auto starts_before = [](const Window& a, const Window& b) { return a.b0 < b.b0; };
+    const std::size_t n = windows.size();
+    std::size_t moves_left = max_moves_per_window * n;
+    for(std::size_t i = 1; i < n; ++i) {
+      if(!starts_before(windows[i], windows[i - 1]))
+        continue;
+      const Window w = windows[i];
+      std::size_t j = i;
+      do {
+        windows[j] = windows[j - 1];
+        --j;
+      } while(j > 0 && starts_before(w, windows[j - 1]) && --moves_left > 0);
+      windows[j] = w;
+      if(moves_left == 0) {
+        std::sort(windows.begin(), windows.end(), starts_before);
+        return;
+      }
+    }
+  }
+  static constexpr std::size_t max_moves_per_window = 64;
 
   // Chunks of a fixed size: lists are small units of work, but uneven.
   static constexpr std::size_t list_grain = 8;
