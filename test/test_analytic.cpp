@@ -6,8 +6,13 @@
 #include "support/checks.h"
 #include "support/solve.h"
 
+#include <CGAL_ext/Geodesics_3/internal/Object_pool.h>
+#include <CGAL_ext/Geodesics_3/internal/Window.h>
+
 #include <cmath>
+#include <cstdint>
 #include <optional>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -261,6 +266,100 @@ TEST(AnalyticTetrahedron, VertexAndFaceCentreSources)
     EXPECT_TRUE(agrees_relative(solve(m, Face_location(f, Barycentric{{1. / 3, 1. / 3, 1. / 3}})), exact, 1e-12,
                                 "tetrahedron from the centre of face " + std::to_string(f.idx())));
   }
+}
+
+// ---------------------------------------------------------------------------------------------
+// The window toolkit against the distances it compares: on every piece of an overlap that
+// `compare_on_overlap` reports, the window it names is the shorter one wherever sampled (away
+// from the cut points). Random windows of a unit edge, and pairs built to share a pseudo-source
+// height or an end distance, the cases where the pre-tests decide without the quadratic.
+TEST(WindowToolkit, OverlapPiecesGoToTheShorterWindow)
+{
+  namespace gi = CGAL_ext::Geodesics_3::internal;
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> unit(0., 1.);
+  auto random_window = [&]() {
+    gi::Window_geometry w;
+    w.b0 = unit(random) * 0.5;
+    w.b1 = 0.5 + unit(random) * 0.5;
+    w.sx = -1 + 3 * unit(random);
+    w.sy = -0.01 - 1.5 * unit(random);
+    w.sigma = 0.5 * unit(random);
+    return w;
+  };
+  int pieces = 0, split = 0;
+  for(int pair = 0; pair < 20000; ++pair) {
+    gi::Window_geometry w0 = random_window(), w1 = random_window();
+    if(pair % 4 == 1)
+      w1.sy = w0.sy; // the line through the pseudo-sources never meets the edge
+    if(pair % 4 == 2) // equal distances at the start of the overlap
+      w1.sigma = std::max(0., gi::distance_at(w0, std::max(w0.b0, w1.b0)) -
+                                  gi::norm2d(std::max(w0.b0, w1.b0) - w1.sx, w1.sy));
+    const double lo = std::max(w0.b0, w1.b0), hi = std::min(w0.b1, w1.b1);
+    double cut[4];
+    int winner[3];
+    const int n = gi::compare_on_overlap(w0, w1, lo, hi, cut, winner);
+    ASSERT_GE(n, 2);
+    ASSERT_LE(n, 4);
+    EXPECT_EQ(cut[0], lo);
+    EXPECT_EQ(cut[n - 1], hi);
+    split += n > 2;
+    for(int i = 0; i + 1 < n; ++i) {
+      ASSERT_LE(cut[i], cut[i + 1]);
+      ++pieces;
+      for(int k = 1; k < 10; ++k) {
+        const double x = cut[i] + (cut[i + 1] - cut[i]) * k / 10.;
+        if(x - cut[i] < 1e-9 || cut[i + 1] - x < 1e-9)
+          continue;
+        const double d0 = gi::distance_at(w0, x), d1 = gi::distance_at(w1, x);
+        const double won = winner[i] == 0 ? d0 : d1, lost = winner[i] == 0 ? d1 : d0;
+        ASSERT_LE(won, lost + 1e-12) << "pair " << pair << ", piece " << i << " of " << n - 1 << ", x = " << x;
+      }
+    }
+  }
+  EXPECT_GT(split, 1000); // overlaps where the windows cross were among them
+  EXPECT_GT(pieces, 20000);
+}
+
+// VTP's window store: objects found again by index across blocks, 64-byte aligned, freed objects
+// given again before new ones, the live count and the bytes of the blocks.
+TEST(WindowToolkit, IndexedPoolKeepsObjectsByIndex)
+{
+  namespace gi = CGAL_ext::Geodesics_3::internal;
+  typedef gi::Indexed_pool<gi::Window> Pool;
+  Pool pool;
+  const std::size_t n = 3 * Pool::block_size + 5;
+  std::vector<std::uint32_t> index(n);
+  for(std::size_t i = 0; i < n; ++i) {
+    gi::Window w;
+    w.b0 = double(i);
+    w.source = int(i);
+    gi::Window* p = pool.allocate(0, w, index[i]);
+    EXPECT_EQ(reinterpret_cast<std::uintptr_t>(p) % 64, 0u);
+    EXPECT_EQ(&pool[index[i]], p);
+  }
+  EXPECT_EQ(pool.live(), n);
+  EXPECT_EQ(pool.bytes(), 4 * Pool::block_size * sizeof(gi::Window));
+  for(std::size_t i = 0; i < n; ++i)
+    ASSERT_EQ(pool[index[i]].source, int(i));
+  // free every other object as one chain, then take as many again: no new block
+  for(std::size_t i = 0; i + 2 < n; i += 2)
+    pool[index[i]].next = index[i + 2];
+  const std::size_t chain = (n + 1) / 2;
+  pool[index[2 * (chain - 1)]].next = Pool::nil;
+  pool.release_chain(0, index[0]);
+  EXPECT_EQ(pool.live(), n - chain);
+  for(std::size_t i = 0; i < chain; ++i) {
+    std::uint32_t again;
+    gi::Window w;
+    w.source = -1;
+    pool.allocate(0, w, again);
+    ASSERT_EQ(again % 2, 0u) << "a freed index is given again first";
+  }
+  EXPECT_EQ(pool.live(), n);
+  EXPECT_EQ(pool.bytes(), 4 * Pool::block_size * sizeof(gi::Window));
+  for(std::size_t i = 1; i < n; i += 2)
+    EXPECT_EQ(pool[index[i]].source, int(i)) << "objects not freed are untouched";
 }
 
 } // namespace

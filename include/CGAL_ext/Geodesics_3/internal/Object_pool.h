@@ -17,17 +17,12 @@ namespace CGAL_ext {
 namespace Geodesics_3 {
 namespace internal {
 
-/// Storage of windows (any type with a `next` pointer to its own type): no allocation per
-/// window once the pool has grown to the size of the wavefront, and no sharing between threads.
-/// Each thread uses its own slot: blocks it carved and a list of freed windows (a window freed
-/// by another thread than the one that made it simply joins that thread's list). Windows never
-/// move, so they are linked by pointer.
-template <class T>
-class Object_pool
+/// What both pools below keep per thread: one slot per thread of the task arena, each with the
+/// count of its objects alive. `Slot` has a `live` member.
+template <class Slot>
+class Pool_slots
 {
 public:
-  static constexpr std::size_t block_size = 4096;
-
   /// Gives the pool one slot per thread of the task arena the caller runs in when `parallel`,
   /// one slot otherwise, and returns the calling thread's slot; only before any allocation.
   std::size_t use_one_slot_per_thread(bool parallel)
@@ -36,6 +31,44 @@ public:
     return parallel ? this_thread_slot() : 0;
   }
   std::size_t number_of_slots() const { return m_slots.size(); }
+
+  /// Objects alive (exact between parallel steps).
+  std::size_t live() const
+  {
+    std::ptrdiff_t n = 0;
+    for(const Slot& s : m_slots)
+      n += s.live;
+    return std::size_t(n);
+  }
+
+protected:
+  std::vector<Slot> m_slots = std::vector<Slot>(1);
+};
+
+/// A thread's part of an `Object_pool`.
+template <class T>
+struct Object_pool_slot
+{
+  static constexpr std::size_t block_size = 4096;
+  alignas(64) T* free = nullptr;
+  std::vector<std::unique_ptr<T[]>> blocks;
+  std::size_t used = block_size;
+  std::ptrdiff_t live = 0; // may go below zero in one slot: windows are freed where they are used
+};
+
+/// Storage of windows (any type with a `next` pointer to its own type): no allocation per
+/// window once the pool has grown to the size of the wavefront, and no sharing between threads.
+/// Each thread uses its own slot: blocks it carved and a list of freed windows (a window freed
+/// by another thread than the one that made it simply joins that thread's list). Windows never
+/// move, so they are linked by pointer.
+template <class T>
+class Object_pool : public Pool_slots<Object_pool_slot<T>>
+{
+  using Pool_slots<Object_pool_slot<T>>::m_slots;
+  typedef Object_pool_slot<T> Slot;
+
+public:
+  static constexpr std::size_t block_size = Slot::block_size;
 
   /// An object of the slot, as it was left when freed (value-initialized when new).
   T* allocate(std::size_t slot)
@@ -54,12 +87,6 @@ public:
     ++s.live;
     return p;
   }
-  T* allocate(std::size_t slot, const T& w)
-  {
-    T* p = allocate(slot);
-    *p = w;
-    return p;
-  }
   /// Frees `w` and the objects linked after it.
   void release_chain(std::size_t slot, T* w)
   {
@@ -72,27 +99,11 @@ public:
       w = next;
     }
   }
-  /// Frees `w` alone, whatever it links to.
-  void release_one(std::size_t slot, T* w)
-  {
-    Slot& s = m_slots[slot];
-    w->next = s.free;
-    s.free = w;
-    --s.live;
-  }
   /// Frees `w` alone.
   void release(std::size_t slot, T* w)
   {
     w->next = nullptr;
     release_chain(slot, w);
-  }
-  /// Windows alive (exact between parallel steps).
-  std::size_t live() const
-  {
-    std::ptrdiff_t n = 0;
-    for(const Slot& s : m_slots)
-      n += s.live;
-    return std::size_t(n);
   }
   std::size_t bytes() const
   {
@@ -101,16 +112,32 @@ public:
       blocks += s.blocks.size();
     return blocks * block_size * sizeof(T);
   }
+};
 
-private:
-  struct alignas(64) Slot
+/// A thread's part of an `Indexed_pool`.
+template <class T>
+struct Indexed_pool_slot
+{
+  static constexpr std::uint32_t nil = 0xFFFFFFFFu; // no object
+  // Objects of a cache line start on one.
+  static constexpr std::size_t block_alignment = 64;
+  static constexpr unsigned block_bits = 12;
+  static constexpr std::uint32_t block_size = 1u << block_bits;
+  struct Free_block
   {
-    T* free = nullptr;
-    std::vector<std::unique_ptr<T[]>> blocks;
-    std::size_t used = block_size;
-    std::ptrdiff_t live = 0; // may go below zero in one slot: windows are freed where they are used
+    void operator()(T* block) const
+    {
+      std::destroy_n(block, block_size);
+      ::operator delete(block, std::align_val_t(block_alignment));
+    }
   };
-  std::vector<Slot> m_slots = std::vector<Slot>(1);
+
+  alignas(64) std::vector<std::unique_ptr<T, Free_block>> blocks; // the blocks this slot carved
+  std::uint32_t free = nil;
+  std::uint32_t block = 0; // the number of the block being carved
+  T* block_start = nullptr;  // and its first object
+  std::uint32_t used = block_size;
+  std::ptrdiff_t live = 0; // may go below zero in one slot: objects are freed where they are used
 };
 
 /// The same storage for objects linked by a 32-bit index (`std::uint32_t next`, `nil` at the
@@ -119,24 +146,20 @@ private:
 /// number taken atomically) and never move, so a thread may follow links into blocks that
 /// another thread carved, once the step that linked them has ended.
 template <class T>
-class Indexed_pool
+class Indexed_pool : public Pool_slots<Indexed_pool_slot<T>>
 {
+  using Pool_slots<Indexed_pool_slot<T>>::m_slots;
+  typedef Indexed_pool_slot<T> Slot;
+
 public:
-  static constexpr std::uint32_t nil = 0xFFFFFFFFu;
-  static constexpr unsigned block_bits = 12;
-  static constexpr std::uint32_t block_size = 1u << block_bits;
+  static constexpr std::uint32_t nil = Slot::nil;
+  static constexpr unsigned block_bits = Slot::block_bits;
+  static constexpr std::uint32_t block_size = Slot::block_size;
   static constexpr std::uint32_t max_blocks = 1u << (32 - block_bits);
 
   // The table of blocks is left uninitialized: only the entries of blocks made are read, and
   // the memory of the rest is never touched.
   Indexed_pool() : m_blocks(new T*[max_blocks]) {}
-
-  /// See `Object_pool::use_one_slot_per_thread()`.
-  std::size_t use_one_slot_per_thread(bool parallel)
-  {
-    m_slots.resize(parallel ? arena_concurrency() : 1);
-    return parallel ? this_thread_slot() : 0;
-  }
 
   T& operator[](std::uint32_t i) const { return m_blocks[i >> block_bits][i & (block_size - 1)]; }
 
@@ -177,34 +200,15 @@ public:
     s.free = i;
     --s.live;
   }
-  /// Objects alive (exact between parallel steps).
-  std::size_t live() const
-  {
-    std::ptrdiff_t n = 0;
-    for(const Slot& s : m_slots)
-      n += s.live;
-    return std::size_t(n);
-  }
   std::size_t bytes() const { return std::size_t(m_block_count.load()) * block_size * sizeof(T); }
 
 private:
-  // Objects of a cache line start on one.
-  static constexpr std::size_t block_alignment = 64;
-  struct Free_block
-  {
-    void operator()(T* block) const
-    {
-      std::destroy_n(block, block_size);
-      ::operator delete(block, std::align_val_t(block_alignment));
-    }
-  };
-  struct Slot;
   void new_block(Slot& s)
   {
     const std::uint32_t b = m_block_count.fetch_add(1, std::memory_order_relaxed);
     if(b >= max_blocks)
       throw std::length_error("geodesic windows: more than 2^32 windows alive at once");
-    T* block = static_cast<T*>(::operator new(sizeof(T) * block_size, std::align_val_t(block_alignment)));
+    T* block = static_cast<T*>(::operator new(sizeof(T) * block_size, std::align_val_t(Slot::block_alignment)));
     std::uninitialized_value_construct_n(block, block_size);
     s.blocks.emplace_back(block);
     m_blocks[b] = block;
@@ -213,18 +217,8 @@ private:
     s.used = 0;
   }
 
-  struct alignas(64) Slot
-  {
-    std::vector<std::unique_ptr<T, Free_block>> blocks; // the blocks this slot carved
-    std::uint32_t free = nil;
-    std::uint32_t block = 0; // the block being carved
-    T* block_start = nullptr;
-    std::uint32_t used = block_size;
-    std::ptrdiff_t live = 0; // may go below zero in one slot: objects are freed where they are used
-  };
   std::unique_ptr<T*[]> m_blocks;
   std::atomic<std::uint32_t> m_block_count{0};
-  std::vector<Slot> m_slots = std::vector<Slot>(1);
 };
 
 } // namespace internal

@@ -23,7 +23,26 @@ namespace internal {
 
 /// Where VTP keeps the windows of its lists.
 typedef Indexed_pool<Window> Window_pool;
-typedef Window_chain<Window_pool> Window_list;
+
+/// Windows of the pool linked through `next`, with their last one and their number.
+struct Window_list
+{
+  std::uint32_t head = Window_pool::nil;
+  Window* tail = nullptr;
+  std::size_t size = 0;
+
+  void clear() { head = Window_pool::nil, tail = nullptr, size = 0; }
+  /// Appends a new window of `pool`, of the thread's `slot`, set to `w`.
+  void push_back(Window_pool& pool, std::size_t slot, const Window& w)
+  {
+    std::uint32_t index;
+    Window* p = pool.allocate(slot, w, index);
+    p->next = Window_pool::nil;
+    (tail ? tail->next : head) = index;
+    tail = p;
+    ++size;
+  }
+};
 
 /// One window list taken across its triangle: the work of one task of the propagation step.
 /// `propagate()` fills it reading only shared state that no task writes; `merge()` applies it.

@@ -39,7 +39,7 @@ struct Window : Window_geometry
 {
   double d0, d1;
   int source;
-  std::uint32_t next = 0xFFFFFFFFu;
+  std::uint32_t next = 0; // set when the window is linked into a list (VTP_solver.h)
 };
 static_assert(sizeof(Window) == 64, "a list window is one cache line");
 
@@ -381,32 +381,6 @@ void make_children(const Window_geometry& w, const Face_crossing& c, double ac_e
       add(c.to_cb, child, false);
   }
 }
-
-/// Windows of `Pool` linked through `next`, with their last one and their number.
-template <class Pool>
-struct Window_chain
-{
-  std::uint32_t head = Pool::nil;
-  Window* tail = nullptr;
-  std::size_t size = 0;
-
-  void clear() { head = Pool::nil, tail = nullptr, size = 0; }
-  /// Appends the window `w` of index `index`.
-  void push_back(Window* w, std::uint32_t index)
-  {
-    w->next = Pool::nil;
-    (tail ? tail->next : head) = index;
-    tail = w;
-    ++size;
-  }
-  /// Appends a new window of `pool` set to `w`.
-  void push_back(Pool& pool, std::size_t slot, const Window& w)
-  {
-    std::uint32_t index;
-    Window* p = pool.allocate(slot, w, index);
-    push_back(p, index);
-  }
-};
 
 } // namespace internal
 } // namespace Geodesics_3
