@@ -74,18 +74,16 @@ public:
   T* allocate(std::size_t slot)
   {
     Slot& s = m_slots[slot];
-    T* p = s.free;
-    if(p)
-      s.free = p->next;
-    else {
-      if(s.used == block_size) {
-        s.blocks.push_back(std::make_unique<T[]>(block_size));
-        s.used = 0;
-      }
-      p = &s.blocks.back()[s.used++];
-    }
     ++s.live;
-    return p;
+    if(T* p = s.free) {
+      s.free = p->next;
+      return p;
+    }
+    if(s.used == block_size) {
+      s.blocks.push_back(std::make_unique<T[]>(block_size));
+      s.used = 0;
+    }
+    return &s.blocks.back()[s.used++];
   }
   /// Frees `w` and the objects linked after it.
   void release_chain(std::size_t slot, T* w)
