@@ -11,6 +11,10 @@
 
 #include <filesystem>
 
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
+
 namespace geodesic_tool {
 
 Soup read_soup(const std::string& path)
@@ -33,6 +37,11 @@ Mesh_file make_mesh_file(Soup soup)
     file.soup.points, file.soup.polygons, file.mesh, file.vertex_of_point, file.face_of_polygon,
     CGAL_ext::parameters::glued_vertices_output(std::back_inserter(file.glued_vertices)));
   file.repairs.merged_points += file.soup.points_merged_when_read;
+#if defined(__GLIBC__)
+  // The repair's temporaries are freed by now, but glibc keeps their pages; given back, they do
+  // not stay under what the solver allocates next.
+  malloc_trim(0);
+#endif
   return file;
 }
 

@@ -322,6 +322,51 @@ TEST(Polygon_soup_to_geodesic_mesh, polygons_are_reversed_to_orient_the_surface)
   EXPECT_NEAR(point_distances(p, 1)[3], std::sqrt(2.), 1e-15);
 }
 
+// A soup that is already an oriented manifold skips CGAL's orientation (whose edge sets take
+// several times the soup's memory): the check must say no wherever the orientation would change
+// something, as CGAL's own test of a soup that makes a polygon mesh does.
+TEST(Polygon_soup_to_geodesic_mesh, the_check_that_skips_the_orientation_agrees_with_CGAL)
+{
+  const std::vector<Point> seven(7, Point(0, 0, 0));
+  const Polygons tetrahedron = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}};
+  Polygons one_face_reversed = tetrahedron;
+  std::reverse(one_face_reversed[2].begin(), one_face_reversed[2].end());
+  Polygons pinched = tetrahedron; // two closed fans at point 0
+  for(const Polygons::value_type& f : Polygons{{0, 5, 4}, {0, 4, 6}, {4, 5, 6}, {0, 6, 5}})
+    pinched.push_back(f);
+  const std::vector<std::pair<const char*, Polygons>> cases = {
+    {"tetrahedron", tetrahedron},
+    {"one face reversed", one_face_reversed},
+    {"two tetrahedra at a point", pinched},
+    {"open fan", {{0, 1, 2}, {0, 2, 3}, {0, 3, 4}}},
+    {"closed fan of a quad and triangles", {{0, 1, 2, 3}, {0, 3, 4}, {0, 4, 1}}},
+    {"two open fans at a point", {{0, 1, 2}, {0, 3, 4}}},
+    {"three triangles on an edge", {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}}},
+    {"an edge twice in one direction", {{0, 1, 2}, {0, 1, 3}}},
+    {"a closed fan and an open one at a point", {{0, 1, 2}, {0, 2, 3}, {0, 3, 1}, {0, 4, 5}}},
+  };
+  for(const auto& [name, polygons] : cases) {
+    CGAL_ext::Geodesics_3::internal::Soup_in_repair<Point> soup;
+    soup.points = seven;
+    soup.polygons = polygons;
+    EXPECT_EQ(CGAL_ext::Geodesics_3::internal::is_oriented_manifold(soup), PMP::is_polygon_soup_a_polygon_mesh(polygons))
+      << name;
+  }
+  // a real mesh as read, and with one face reversed
+  std::vector<Point> points;
+  Polygons polygons;
+  ASSERT_TRUE(CGAL::IO::read_polygon_soup(std::string(CGAL_EXT_CGAL_MESHES) + "/elephant.off", points, polygons));
+  CGAL_ext::Geodesics_3::internal::Soup_in_repair<Point> soup;
+  soup.points = points;
+  soup.polygons = polygons;
+  EXPECT_TRUE(CGAL_ext::Geodesics_3::internal::is_oriented_manifold(soup));
+  std::reverse(soup.polygons[100].begin(), soup.polygons[100].end());
+  EXPECT_FALSE(CGAL_ext::Geodesics_3::internal::is_oriented_manifold(soup));
+  std::reverse(polygons[100].begin(), polygons[100].end());
+  const Prepared p = prepare(points, polygons);
+  EXPECT_EQ(p.repairs.reversed_polygons, 1u);
+}
+
 TEST(Polygon_soup_to_geodesic_mesh, isolated_points_are_isolated_vertices)
 {
   std::vector<Point> points = unit_square;

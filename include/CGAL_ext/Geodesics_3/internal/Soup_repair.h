@@ -23,6 +23,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <numeric>
 #include <set>
 #include <sstream>
@@ -153,10 +154,24 @@ inline void append_loops(Soup_polygon polygon, std::vector<Soup_polygon>& loops)
     loops.push_back(std::move(polygon));
 }
 
+/// Whether `polygon` passes twice through a point.
+inline bool has_repeated_point(const Soup_polygon& polygon)
+{
+  for(std::size_t i = 0; i < polygon.size(); ++i)
+    for(std::size_t k = i + 1; k < polygon.size(); ++k)
+      if(polygon[i] == polygon[k])
+        return true;
+  return false;
+}
+
 /// Replaces each polygon by its loops (see `append_loops`); throws `Geodesic_error` when none is left.
 template <class Point>
 void remove_repeated_points(Soup_in_repair<Point>& soup, Geodesic_mesh_repairs& repairs)
 {
+  // Most files need nothing here: they keep their polygons instead of a second copy of them.
+  if(std::none_of(soup.polygons.begin(), soup.polygons.end(),
+                  [](const Soup_polygon& polygon) { return polygon.size() < 3 || has_repeated_point(polygon); }))
+    return;
   std::vector<Soup_polygon> polygons;
   std::vector<std::size_t> input_polygon;
   std::vector<Soup_polygon> loops;
@@ -206,11 +221,99 @@ private:
   std::set<std::pair<std::size_t, std::size_t>>* m_non_manifold_edges;
 };
 
+/// Whether the soup is already what the orientation below would leave unchanged: each directed
+/// edge in one polygon (so an edge in at most two, run in opposite directions), and the polygons
+/// around each point one fan. Polygons have 3 distinct points or more.
+template <class Point>
+bool is_oriented_manifold(const Soup_in_repair<Point>& soup)
+{
+  const std::size_t n = soup.points.size();
+  std::size_t corners = 0;
+  for(const Soup_polygon& polygon : soup.polygons)
+    corners += polygon.size();
+  if(n >= std::numeric_limits<std::uint32_t>::max() || corners >= std::numeric_limits<std::uint32_t>::max())
+    return false;
+  // The directed edges out of each point (v -> to, from the corner `position` of `polygon` at v),
+  // grouped by point.
+  struct Out_edge
+  {
+    std::uint32_t to, polygon, position;
+  };
+  std::vector<std::uint32_t> first(n + 1, 0);
+  for(const Soup_polygon& polygon : soup.polygons)
+    for(std::size_t v : polygon)
+      ++first[v + 1];
+  std::partial_sum(first.begin(), first.end(), first.begin());
+  std::vector<Out_edge> out(corners);
+  {
+    std::vector<std::uint32_t> end(first.begin(), first.end() - 1);
+    for(std::size_t k = 0; k < soup.polygons.size(); ++k) {
+      const Soup_polygon& polygon = soup.polygons[k];
+      for(std::size_t i = 0; i < polygon.size(); ++i)
+        out[end[polygon[i]]++] = Out_edge{std::uint32_t(polygon[(i + 1) % polygon.size()]), std::uint32_t(k), std::uint32_t(i)};
+    }
+  }
+  for(std::size_t v = 0; v < n; ++v) {
+    const auto begin = out.begin() + first[v], end = out.begin() + first[v + 1];
+    std::sort(begin, end, [](const Out_edge& a, const Out_edge& b) { return a.to < b.to; });
+    if(std::adjacent_find(begin, end, [](const Out_edge& a, const Out_edge& b) { return a.to == b.to; }) != end)
+      return false;
+  }
+  const auto find = [&](std::size_t from, std::size_t to) -> const Out_edge* {
+    const auto begin = out.begin() + first[from], end = out.begin() + first[from + 1];
+    const auto it = std::lower_bound(begin, end, to, [](const Out_edge& e, std::size_t t) { return e.to < t; });
+    return it != end && it->to == to ? &*it : nullptr;
+  };
+  // Around each point, from one of its corners: forward across the edge leaving it, until the
+  // start or a border, then backward across the edge coming in; every corner must be met.
+  for(std::size_t v = 0; v < n; ++v) {
+    const std::size_t count = first[v + 1] - first[v];
+    if(count == 0)
+      continue;
+    const Out_edge start = out[first[v]];
+    std::size_t met = 1;
+    bool closed = false;
+    for(Out_edge c = start;;) {
+      const Out_edge* back = find(c.to, v); // the polygon beyond c's outgoing edge, at its corner before v
+      if(!back)
+        break;
+      const Soup_polygon& polygon = soup.polygons[back->polygon];
+      c = Out_edge{std::uint32_t(polygon[(back->position + 2) % polygon.size()]), back->polygon,
+                   std::uint32_t((back->position + 1) % polygon.size())};
+      if(c.polygon == start.polygon && c.position == start.position) {
+        closed = true;
+        break;
+      }
+      if(++met > count)
+        return false;
+    }
+    if(!closed) {
+      for(Out_edge c = start;;) {
+        const Soup_polygon& polygon = soup.polygons[c.polygon];
+        const std::size_t before = polygon[(c.position + polygon.size() - 1) % polygon.size()];
+        const Out_edge* next = find(v, before); // the polygon beyond c's incoming edge, at v
+        if(!next)
+          break;
+        c = *next;
+        if(++met > count)
+          return false;
+      }
+    }
+    if(met != count)
+      return false;
+  }
+  return true;
+}
+
 /// Orients the soup consistently; where it cannot be a manifold, CGAL duplicates points (the
 /// copies are appended: an input point keeps its index, hence one vertex).
 template <class Point>
 void orient(Soup_in_repair<Point>& soup, Geodesic_mesh_repairs& repairs)
 {
+  // CGAL's orientation keeps sets of polygons per edge, several times the soup's memory: a
+  // soup that needs no change (most mesh files) does not go through it.
+  if(is_oriented_manifold(soup))
+    return;
   std::vector<bool> reversed(soup.polygons.size(), false);
   std::set<std::pair<std::size_t, std::size_t>> non_manifold_edges;
   CGAL::Polygon_mesh_processing::orient_polygon_soup(
