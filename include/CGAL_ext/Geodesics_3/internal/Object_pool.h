@@ -64,16 +64,12 @@ struct Object_pool_slot
 template <class T>
 class Object_pool : public Pool_slots<Object_pool_slot<T>>
 {
-  using Pool_slots<Object_pool_slot<T>>::m_slots;
-  typedef Object_pool_slot<T> Slot;
-
 public:
-  static constexpr std::size_t block_size = Slot::block_size;
-
   /// An object of the slot, as it was left when freed (value-initialized when new).
   T* allocate(std::size_t slot)
   {
-    Slot& s = m_slots[slot];
+    auto& s = this->m_slots[slot];
+    constexpr std::size_t block_size = Object_pool_slot<T>::block_size;
     ++s.live;
     if(T* p = s.free) {
       s.free = p->next;
@@ -88,7 +84,7 @@ public:
   /// Frees `w` and the objects linked after it.
   void release_chain(std::size_t slot, T* w)
   {
-    Slot& s = m_slots[slot];
+    auto& s = this->m_slots[slot];
     while(w) {
       T* next = w->next;
       w->next = s.free;
@@ -106,9 +102,9 @@ public:
   std::size_t bytes() const
   {
     std::size_t blocks = 0;
-    for(const Slot& s : m_slots)
+    for(const auto& s : this->m_slots)
       blocks += s.blocks.size();
-    return blocks * block_size * sizeof(T);
+    return blocks * Object_pool_slot<T>::block_size * sizeof(T);
   }
 };
 
