@@ -21,11 +21,13 @@ Soup read_soup(const std::string& path)
 {
   const std::string ext = lowercase_extension(path);
   Soup soup;
+  std::vector<std::vector<std::size_t>> polygons; // as CGAL's readers make them
   if((ext != ".off" && ext != ".obj" && ext != ".ply" && ext != ".stl") || !std::filesystem::is_regular_file(path) ||
-     !CGAL::IO::read_polygon_soup(path, soup.points, soup.polygons))
+     !CGAL::IO::read_polygon_soup(path, soup.points, polygons))
     throw Tool_error("cannot read mesh '" + path + "'");
   if(ext == ".stl")
-    soup.points_merged_when_read = 3 * soup.polygons.size() - soup.points.size();
+    soup.points_merged_when_read = 3 * polygons.size() - soup.points.size();
+  soup.polygons = Polygons(polygons);
   return soup;
 }
 

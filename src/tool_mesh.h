@@ -6,6 +6,8 @@
 #ifndef GEODESIC_TOOL_MESH_H
 #define GEODESIC_TOOL_MESH_H
 
+#include "tool_polygons.h"
+
 #include <CGAL_ext/Geodesics_3/Geodesic_mesh_repairs.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -26,7 +28,7 @@ typedef Mesh::Vertex_index Vertex_index;
 typedef Mesh::Face_index Face_index;
 /// A point inside a face, barycentric coordinates in the library's order of its corners.
 typedef std::pair<Face_index, std::array<double, 3>> Face_location;
-typedef std::vector<std::vector<std::size_t>> Polygons;
+typedef Polygon_list Polygons;
 
 /// The points and polygons of a mesh file, in the file's order.
 struct Soup

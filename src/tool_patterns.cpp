@@ -281,7 +281,7 @@ int run_patterns(const Patterns_options& options)
     check_surface_point_range(*center, file.soup.points.size(), file.soup.polygons.size(), "patch centre");
     std::size_t vertex = center->vertex ? *center->vertex : 0;
     if(!center->vertex) { // the corner with the largest barycentric coordinate
-      const std::vector<std::size_t>& polygon = file.soup.polygons[center->face];
+      const Polygons::Polygon polygon = file.soup.polygons[center->face];
       std::size_t best = 0;
       for(std::size_t k = 1; k < 3 && k < polygon.size(); ++k)
         if(center->barycentric[k] > center->barycentric[best])

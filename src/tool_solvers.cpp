@@ -45,7 +45,7 @@ Vertex_index mesh_vertex(const Mesh_file& file, const Surface_point& s) { return
 Face_location library_location(const Mesh_file& file, const Surface_point& s, const char* role)
 {
   const Face_index f = file.face_of_polygon[s.face];
-  const std::vector<std::size_t>& polygon = file.soup.polygons[s.face];
+  const Polygons::Polygon polygon = file.soup.polygons[s.face];
   if(f == Mesh::null_face())
     throw Tool_error(std::string(role) + " '" + s.text + "': face " + std::to_string(s.face) +
                      " of the file is not a triangle of the surface (" +
@@ -371,7 +371,7 @@ Point surface_point_position(const Mesh_file& file, const Surface_point& s)
 {
   if(s.vertex)
     return file.soup.points[*s.vertex];
-  const std::vector<std::size_t>& polygon = file.soup.polygons[s.face];
+  const Polygons::Polygon polygon = file.soup.polygons[s.face];
   double x[3] = {0, 0, 0};
   for(std::size_t k = 0; k < 3; ++k)
     for(int i = 0; i < 3; ++i)

@@ -231,7 +231,7 @@ double bbox_diagonal(const Soup& soup)
 /// The point of face `face` at barycentric coordinates `b` in the file's order of its vertices.
 Point face_point(const Soup& soup, std::size_t face, const std::array<double, 3>& b)
 {
-  const std::vector<std::size_t>& p = soup.polygons[face];
+  const auto p = soup.polygons[face];
   return CGAL::barycenter(soup.points[p[0]], b[0], soup.points[p[1]], b[1], soup.points[p[2]], b[2]);
 }
 
@@ -743,8 +743,10 @@ protected:
   Soup read_ply_soup(const std::string& name) const
   {
     Soup read;
+    std::vector<std::vector<std::size_t>> polygons;
     std::ifstream in(path(name), std::ios::binary);
-    EXPECT_TRUE(CGAL::IO::read_PLY(in, read.points, read.polygons));
+    EXPECT_TRUE(CGAL::IO::read_PLY(in, read.points, polygons));
+    read.polygons = tool::Polygons(polygons);
     return read;
   }
 
@@ -778,6 +780,26 @@ TEST_F(Tool_output, distances_ply_reads_back_with_cgal)
   EXPECT_EQ(ply.colors[3], CGAL::IO::Color(128, 128, 128));
   EXPECT_EQ(tool::farthest_finite(d), 1. / 3);
   EXPECT_EQ(read_ply_soup("d.ply").polygons, soup.polygons);
+}
+
+// The file's polygons in one array: each polygon as it was given, in order; ids past 32 bits
+// are an error, not a wrapped id.
+TEST(Tool_polygons, one_array_keeps_each_polygon)
+{
+  const std::vector<std::vector<std::size_t>> given = {{0, 1, 2}, {2, 1, 3, 4}, {4, 5, 6, 7, 8}};
+  const tool::Polygons polygons(given);
+  ASSERT_EQ(polygons.size(), 3u);
+  EXPECT_EQ(polygons[1].size(), 4u);
+  EXPECT_EQ(polygons[2][4], 8u);
+  EXPECT_EQ(polygons.to_vectors(), given);
+  std::size_t corners = 0;
+  for(const auto polygon : polygons)
+    corners += polygon.size();
+  EXPECT_EQ(corners, 12u);
+  EXPECT_EQ(polygons, (tool::Polygons{{0, 1, 2}, {2, 1, 3, 4}, {4, 5, 6, 7, 8}}));
+  tool::Polygons too_large;
+  EXPECT_THROW(too_large.push_back(std::vector<std::size_t>{0, 1, std::size_t(1) << 32}), tool::Tool_error);
+  EXPECT_TRUE(too_large.empty()); // nothing of the refused polygon is kept
 }
 
 // The PLY holds the file's polygons as they are, whatever their size, and no mesh is made of them.
@@ -900,7 +922,7 @@ TEST_F(Tool, face_point_coordinates_follow_the_file_order)
   const Soup& soup = file.soup;
   const std::size_t face = 12;
   const std::array<double, 3> b{{0.2, 0.3, 0.5}};
-  const std::vector<std::size_t>& polygon = soup.polygons[face];
+  const auto polygon = soup.polygons[face];
   const std::array<std::size_t, 3> corners = library_corners(file.mesh, Face_index(face));
   ASSERT_NE(corners[0], polygon[0]) << "this face does not tell the two orders apart";
 
@@ -1509,7 +1531,7 @@ TEST_F(Tool, stl_ascii_and_binary)
   const std::vector<double> ascii = repaired_distances("distances square.stl --source 2", note);
   expect_same_distances(ascii, planar_distances(Point(1, 0, 0), first_appearance), 1e-15);
 
-  ASSERT_TRUE(CGAL::IO::write_polygon_soup(path("binary.stl").string(), soup.points, soup.polygons,
+  ASSERT_TRUE(CGAL::IO::write_polygon_soup(path("binary.stl").string(), soup.points, soup.polygons.to_vectors(),
                                            CGAL::parameters::use_binary_mode(true)));
   EXPECT_EQ(read_soup(path("binary.stl").string()).points, first_appearance);
   EXPECT_EQ(repaired_distances("distances binary.stl --source 2", note), ascii);
