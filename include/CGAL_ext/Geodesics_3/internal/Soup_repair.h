@@ -132,6 +132,16 @@ void merge_duplicate_points(Soup_in_repair<Point>& soup, Geodesic_mesh_repairs& 
   soup.polygons.pop_back();
 }
 
+/// The first places i < k where `polygon` passes through the same point, or (0, 0) if none.
+inline std::pair<std::size_t, std::size_t> first_repeated_point(const Soup_polygon& polygon)
+{
+  for(std::size_t i = 0; i < polygon.size(); ++i)
+    for(std::size_t k = i + 1; k < polygon.size(); ++k)
+      if(polygon[i] == polygon[k])
+        return {i, k};
+  return {0, 0};
+}
+
 /// The loops of `polygon` with at least 3 points: repeated consecutive points are dropped, and
 /// a polygon passing twice through a point is cut there into two loops (recursively).
 inline void append_loops(Soup_polygon polygon, std::vector<Soup_polygon>& loops)
@@ -142,26 +152,15 @@ inline void append_loops(Soup_polygon polygon, std::vector<Soup_polygon>& loops)
     else
       ++i;
   }
-  for(std::size_t i = 0; i < polygon.size(); ++i)
-    for(std::size_t k = i + 1; k < polygon.size(); ++k)
-      if(polygon[i] == polygon[k]) {
-        append_loops(Soup_polygon(polygon.begin() + std::ptrdiff_t(i), polygon.begin() + std::ptrdiff_t(k)), loops);
-        polygon.erase(polygon.begin() + std::ptrdiff_t(i), polygon.begin() + std::ptrdiff_t(k));
-        append_loops(std::move(polygon), loops);
-        return;
-      }
+  const auto [i, k] = first_repeated_point(polygon);
+  if(k != 0) {
+    append_loops(Soup_polygon(polygon.begin() + std::ptrdiff_t(i), polygon.begin() + std::ptrdiff_t(k)), loops);
+    polygon.erase(polygon.begin() + std::ptrdiff_t(i), polygon.begin() + std::ptrdiff_t(k));
+    append_loops(std::move(polygon), loops);
+    return;
+  }
   if(polygon.size() >= 3)
     loops.push_back(std::move(polygon));
-}
-
-/// Whether `polygon` passes twice through a point.
-inline bool has_repeated_point(const Soup_polygon& polygon)
-{
-  for(std::size_t i = 0; i < polygon.size(); ++i)
-    for(std::size_t k = i + 1; k < polygon.size(); ++k)
-      if(polygon[i] == polygon[k])
-        return true;
-  return false;
 }
 
 /// Replaces each polygon by its loops (see `append_loops`); throws `Geodesic_error` when none is left.
@@ -170,7 +169,7 @@ void remove_repeated_points(Soup_in_repair<Point>& soup, Geodesic_mesh_repairs& 
 {
   // Most files need nothing here: they keep their polygons instead of a second copy of them.
   if(std::none_of(soup.polygons.begin(), soup.polygons.end(),
-                  [](const Soup_polygon& polygon) { return polygon.size() < 3 || has_repeated_point(polygon); }))
+                  [](const Soup_polygon& polygon) { return polygon.size() < 3 || first_repeated_point(polygon).second != 0; }))
     return;
   std::vector<Soup_polygon> polygons;
   std::vector<std::size_t> input_polygon;
