@@ -98,7 +98,7 @@ int run_distances(const Distances_options& options)
 
   CGAL_ext::Geodesic_statistics stats;
   std::vector<long> labels;
-  const std::vector<double> distances = compute_distances(file, sources, choice, stats, labels);
+  const std::vector<double> distances = compute_distances(file, sources, choice, stats, options.labels.empty() ? nullptr : &labels);
 
   std::vector<Output_file> outputs{{options.output, [&](std::ostream& os) {
                                       return format == Output_format::ply ? write_distances_ply(os, file.soup, distances)

@@ -18,6 +18,7 @@
 #endif
 
 #include <boost/iterator/function_output_iterator.hpp>
+#include <boost/property_map/property_map.hpp>
 
 #include <algorithm>
 #include <iterator>
@@ -29,7 +30,22 @@ namespace {
 
 const double infinity = std::numeric_limits<double>::infinity();
 typedef Mesh::Property_map<Vertex_index, double> Distance_map;
-typedef Mesh::Property_map<Vertex_index, long> Label_map;
+/// The nearest source of each vertex, by vertex index, where the caller wants it; nothing
+/// otherwise (a map per vertex less during the solve), with one instantiation of the library
+/// call for both.
+struct Label_map
+{
+  typedef Vertex_index key_type;
+  typedef long value_type;
+  typedef long reference;
+  typedef boost::writable_property_map_tag category;
+  std::vector<long>* labels = nullptr;
+  friend void put(const Label_map& map, Vertex_index v, long label)
+  {
+    if(map.labels)
+      (*map.labels)[v.idx()] = label;
+  }
+};
 
 #ifdef CGAL_LINKED_WITH_TBB
 typedef CGAL::Parallel_tag Parallel_tag;
@@ -222,23 +238,26 @@ int effective_threads(const Solver_choice& choice)
 
 std::vector<double> compute_distances(Mesh_file& file, const std::vector<Surface_point>& sources,
                                       const Solver_choice& choice, CGAL_ext::Geodesic_statistics& stats,
-                                      std::vector<long>& nearest_source)
+                                      std::vector<long>* nearest_source)
 {
   check_a_source_is_on_a_face(file, sources);
   Mesh& mesh = file.mesh;
   auto distance = mesh.add_property_map<Vertex_index, double>("v:distance", infinity).first;
-  auto label = mesh.add_property_map<Vertex_index, long>("v:nearest_source", -1).first;
+  std::vector<long> label_of_vertex(nearest_source ? mesh.num_vertices() : 0, -1);
+  const Label_map label{nearest_source ? &label_of_vertex : nullptr};
   with_library_sources(file, sources, [&](const auto& library_sources) {
     solve(file, distance, label, library_sources, choice, stats);
   });
   std::vector<double> distance_of_point;
-  nearest_source.clear();
-  for(Vertex_index v : file.vertex_of_point) {
+  distance_of_point.reserve(file.vertex_of_point.size());
+  for(Vertex_index v : file.vertex_of_point)
     distance_of_point.push_back(distance[v]);
-    nearest_source.push_back(label[v]);
-  }
   mesh.remove_property_map(distance);
-  mesh.remove_property_map(label);
+  if(nearest_source) {
+    nearest_source->clear();
+    for(Vertex_index v : file.vertex_of_point)
+      nearest_source->push_back(label_of_vertex[v.idx()]);
+  }
   return distance_of_point;
 }
 

@@ -57,7 +57,6 @@ struct Mesh_cache
   std::vector<Halfedge_frame> frame;           // per half-edge
   std::vector<double> corner_angle;            // per half-edge: the angle at its source vertex; only while built
   std::vector<std::int32_t> first_outgoing;    // per vertex, -1 if isolated; a border one first
-  std::vector<double> angle_sum;               // per vertex
   std::vector<std::uint8_t> is_border_vertex;  // per vertex
   std::vector<std::uint8_t> is_pseudo_source;  // per vertex: saddle, border or glued vertex
   // Vertices [0, number_of_mesh_vertices) are the caller's; a non-manifold vertex keeps its first
@@ -198,7 +197,7 @@ inline void Mesh_cache::finish(const std::vector<std::vector<int>>& glued_groups
   number_of_vertices = position.size();
   glue_vertices(groups);
   compute_vertex_flags();
-  // the angle sums are all the solvers need of the corner angles
+  // the pseudo-source flags (from the angle sums) are all the solvers need of the corner angles
   std::vector<double>().swap(corner_angle);
 }
 
@@ -566,14 +565,12 @@ inline void Mesh_cache::glue_vertices(const std::vector<std::vector<int>>& group
 inline void Mesh_cache::compute_vertex_flags()
 {
   const std::size_t nv = position.size();
-  angle_sum.assign(nv, 0.);
   is_border_vertex.assign(nv, 0);
   is_pseudo_source.assign(nv, 0);
   const double two_pi = 2 * 3.14159265358979323846;
   for(std::size_t v = 0; v < nv; ++v) {
     double sum = 0;
     for_each_outgoing(int(v), [&](int h) { sum += corner_angle[h]; });
-    angle_sum[v] = sum;
     const int h0 = first_outgoing[v];
     is_border_vertex[v] = (h0 >= 0 && opposite_halfedge[h0] < 0) ? 1 : 0;
     // a glued vertex passes paths on to the other fans through it, as a saddle does

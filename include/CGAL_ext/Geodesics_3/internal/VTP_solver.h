@@ -100,8 +100,7 @@ public:
     , m_emits_when_taken(mesh.is_pseudo_source)
     , m_is_stop(mesh.number_of_vertices, 0)
     , m_head(mesh.number_of_halfedges(), Window_pool::nil)
-    , m_is_scheduled(mesh.number_of_halfedges(), 0)
-    , m_is_waiting(mesh.number_of_halfedges(), 0)
+    , m_list_flags(mesh.number_of_halfedges(), 0)
     , m_buckets(mesh.mean_edge_length / std::min(std::max(1., mesh.mean_anisotropy), max_anisotropy))
     , m_reset_step(settings.approximation * mesh.mean_edge_length)
     // What a reset keeps depends on the order in which lists were propagated: the approximation
@@ -342,8 +341,8 @@ private:
 
   void schedule(int h)
   {
-    if(m_head[h] != Window_pool::nil && !m_is_scheduled[h]) {
-      m_is_scheduled[h] = 1;
+    if(m_head[h] != Window_pool::nil && !(m_list_flags[h] & in_scheduled_lists)) {
+      m_list_flags[h] |= in_scheduled_lists;
       m_scheduled_lists.push_back(h);
     }
   }
@@ -359,8 +358,8 @@ private:
     m_statistics.windows_created += chain.size;
     if(m_flushing || inside_swept_region(h))
       schedule(h);
-    else if(!m_is_waiting[h]) {
-      m_is_waiting[h] = 1;
+    else if(!(m_list_flags[h] & in_waiting_lists)) {
+      m_list_flags[h] |= in_waiting_lists;
       m_waiting_lists.push_back(h);
     }
   }
@@ -448,7 +447,7 @@ private:
       if(m_head[h] != Window_pool::nil && !inside_swept_region(h))
         m_waiting_lists[kept++] = h;
       else
-        m_is_waiting[h] = 0;
+        m_list_flags[h] &= std::uint8_t(~in_waiting_lists);
     }
     m_waiting_lists.resize(kept);
     m_next_reset = r + m_reset_step;
@@ -510,7 +509,7 @@ private:
     update_stop_limit();
     m_flushing = true;
     for(int h : m_waiting_lists) {
-      m_is_waiting[h] = 0;
+      m_list_flags[h] &= std::uint8_t(~in_waiting_lists);
       schedule(h);
     }
     m_waiting_lists.clear();
@@ -522,7 +521,7 @@ private:
 
   void detach(int h, List_task& task)
   {
-    m_is_scheduled[h] = 0;
+    m_list_flags[h] &= std::uint8_t(~in_scheduled_lists);
     task.halfedge = h;
     task.input = m_head[h];
     m_head[h] = Window_pool::nil;
@@ -656,8 +655,9 @@ private:
   std::vector<std::uint8_t> m_emits_when_taken; // pseudo-source, source, or made a source by a reset
   std::vector<std::uint8_t> m_is_stop;
   std::vector<std::uint32_t> m_head; // the first window of the list of each half-edge
-  std::vector<std::uint8_t> m_is_scheduled; // per half-edge: its list is in m_scheduled_lists
-  std::vector<std::uint8_t> m_is_waiting;   // per half-edge: its list is in m_waiting_lists
+  // per half-edge: whether its list is in m_scheduled_lists, in m_waiting_lists
+  static constexpr std::uint8_t in_scheduled_lists = 1, in_waiting_lists = 2;
+  std::vector<std::uint8_t> m_list_flags;
   std::vector<int> m_waiting_lists;   // lists holding windows outside the swept region
   std::vector<int> m_scheduled_lists; // lists to propagate, in order
   Vertex_heap m_heap;
