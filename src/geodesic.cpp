@@ -98,7 +98,8 @@ int run_distances(const Distances_options& options)
 
   CGAL_ext::Geodesic_statistics stats;
   std::vector<long> labels;
-  const std::vector<double> distances = compute_distances(file, sources, choice, stats, options.labels.empty() ? nullptr : &labels);
+  std::vector<long>* wanted_labels = options.labels.empty() ? nullptr : &labels;
+  const std::vector<double> distances = compute_distances(file, sources, choice, stats, wanted_labels);
 
   std::vector<Output_file> outputs{{options.output, [&](std::ostream& os) {
                                       return format == Output_format::ply ? write_distances_ply(os, file.soup, distances)

@@ -105,7 +105,10 @@ public:
     return polygons;
   }
 
-  friend bool operator==(const Polygon_list& a, const Polygon_list& b) { return a.m_ids == b.m_ids && a.m_start == b.m_start; }
+  friend bool operator==(const Polygon_list& a, const Polygon_list& b)
+  {
+    return a.m_ids == b.m_ids && a.m_start == b.m_start;
+  }
   friend bool operator!=(const Polygon_list& a, const Polygon_list& b) { return !(a == b); }
 
 private:

@@ -25,8 +25,8 @@ int effective_threads(const Solver_choice& choice);
 
 /// Runs the library; returns the distance of each point of the file (merged points share theirs)
 /// and, unless `nearest_source` is null, fills it with the index of each point's nearest source
-/// (-1 where none reaches). Throws Tool_error when a face point's face is not a triangle of the mesh, or when
-/// every source is a vertex in no face.
+/// (-1 where none reaches). Throws Tool_error when a face point's face is not a triangle of the
+/// mesh, or when every source is a vertex in no face.
 std::vector<double> compute_distances(Mesh_file& file, const std::vector<Surface_point>& sources,
                                       const Solver_choice& choice, CGAL_ext::Geodesic_statistics& stats,
                                       std::vector<long>* nearest_source);

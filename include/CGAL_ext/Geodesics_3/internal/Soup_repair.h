@@ -25,6 +25,7 @@
 #include <cstdint>
 #include <limits>
 #include <numeric>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <string>
@@ -132,14 +133,14 @@ void merge_duplicate_points(Soup_in_repair<Point>& soup, Geodesic_mesh_repairs& 
   soup.polygons.pop_back();
 }
 
-/// The first places i < k where `polygon` passes through the same point, or (0, 0) if none.
-inline std::pair<std::size_t, std::size_t> first_repeated_point(const Soup_polygon& polygon)
+/// The first places i < k where `polygon` passes through the same point, if any.
+inline std::optional<std::pair<std::size_t, std::size_t>> first_repeated_point(const Soup_polygon& polygon)
 {
   for(std::size_t i = 0; i < polygon.size(); ++i)
     for(std::size_t k = i + 1; k < polygon.size(); ++k)
       if(polygon[i] == polygon[k])
-        return {i, k};
-  return {0, 0};
+        return std::make_pair(i, k);
+  return std::nullopt;
 }
 
 /// The loops of `polygon` with at least 3 points: repeated consecutive points are dropped, and
@@ -152,8 +153,8 @@ inline void append_loops(Soup_polygon polygon, std::vector<Soup_polygon>& loops)
     else
       ++i;
   }
-  const auto [i, k] = first_repeated_point(polygon);
-  if(k != 0) {
+  if(const auto repeat = first_repeated_point(polygon)) {
+    const auto [i, k] = *repeat;
     append_loops(Soup_polygon(polygon.begin() + std::ptrdiff_t(i), polygon.begin() + std::ptrdiff_t(k)), loops);
     polygon.erase(polygon.begin() + std::ptrdiff_t(i), polygon.begin() + std::ptrdiff_t(k));
     append_loops(std::move(polygon), loops);
@@ -169,7 +170,7 @@ void remove_repeated_points(Soup_in_repair<Point>& soup, Geodesic_mesh_repairs& 
 {
   // Most files need nothing here: they keep their polygons instead of a second copy of them.
   if(std::none_of(soup.polygons.begin(), soup.polygons.end(),
-                  [](const Soup_polygon& polygon) { return polygon.size() < 3 || first_repeated_point(polygon).second != 0; }))
+                  [](const Soup_polygon& polygon) { return polygon.size() < 3 || first_repeated_point(polygon); }))
     return;
   std::vector<Soup_polygon> polygons;
   std::vector<std::size_t> input_polygon;
