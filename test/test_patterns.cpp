@@ -2,6 +2,7 @@
 // Repetitive pattern detection (thesis chapter 5): each step on its own, then the whole pipeline
 // on meshes with planted instances, scored by recall and precision.
 
+#include "support/mesh_transformations.h"
 #include "support/pattern_meshes.h"
 
 #include <CGAL_ext/detect_repetitive_patterns.h>
@@ -11,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <random>
 #include <set>
 #include <string>
@@ -308,6 +310,41 @@ TEST(Pattern_detection, Same_instances_for_1_2_and_4_threads)
   EXPECT_GE(centres[0].size(), 9u);
   EXPECT_EQ(centres[0], centres[1]);
   EXPECT_EQ(centres[0], centres[2]);
+}
+
+// The constants of the pipeline are relative to the patch and the mesh. Scaled by a power of
+// two (every length then exactly scaled, round-off included), the scene gives the same
+// instances at the same vertices. Scaled by 1e-3 and by 1e3, round-off differs, and the
+// centres' descent may end at a neighbour of the vertex it found at scale 1 (a signature sums
+// vertices by bands of distance: a vertex on a band's edge moves with the last bit): the same
+// number of instances, each within two edge lengths of one found at scale 1.
+TEST(Pattern_detection, Same_instances_at_any_scale)
+{
+  const Small_scene scene = ten_bumps();
+  auto centres_of = [](const Mesh& m, const CGAL_ext::Pattern_patch<Mesh>& patch) {
+    std::vector<Vertex> centres;
+    for(const auto& instance : CGAL_ext::detect_repetitive_patterns<CGAL::Parallel_if_available_tag>(m, patch).instances)
+      centres.push_back(instance.center_vertex);
+    return centres;
+  };
+  const std::vector<Vertex> at_one = centres_of(scene.mesh, scene.patch);
+  EXPECT_GE(at_one.size(), 9u);
+  const double edge = mean_edge_length(scene.mesh);
+  for(double factor : {0.125, 2.0, 1e-3, 1e3}) {
+    const auto patch = CGAL_ext::Pattern_patch<Mesh>::disk(scene.patch.center, factor * scene.patch.radius);
+    const std::vector<Vertex> centres = centres_of(scaled(scene.mesh, factor), patch);
+    if(factor == 0.125 || factor == 2.0) {
+      EXPECT_EQ(centres, at_one) << "scaled by " << factor;
+      continue;
+    }
+    ASSERT_EQ(centres.size(), at_one.size()) << "scaled by " << factor;
+    for(Vertex c : centres) {
+      double nearest = std::numeric_limits<double>::infinity();
+      for(Vertex a : at_one)
+        nearest = std::min(nearest, std::sqrt(CGAL::squared_distance(scene.mesh.point(c), scene.mesh.point(a))));
+      EXPECT_LE(nearest, 2 * edge) << "scaled by " << factor << ": the instance at " << c;
+    }
+  }
 }
 
 // The callback hears the fraction done, never decreasing, through every step to 1; its false

@@ -2,6 +2,7 @@
 // before it (checked against single-source solves), the covering radius never grows, every
 // thread count gives the same samples, and the propagations are incremental.
 #include "support/checks.h"
+#include "support/mesh_transformations.h"
 #include "support/solve.h"
 
 #include <CGAL_ext/farthest_point_sampling.h>
@@ -56,20 +57,22 @@ std::size_t argmax(const std::vector<double>& d)
 /// Checks, by one single-source solve per sample, that each sample after the first is the
 /// vertex farthest from the ones before it and each covering radius the largest distance to
 /// the samples so far, never increasing; returns the distance to the nearest sample.
-std::vector<double> expect_each_sample_farthest(const Mesh& m, const Sampling& s, const char* name)
+std::vector<double> expect_each_sample_farthest(const Mesh& m, const Sampling& s, const std::string& name)
 {
   const double tolerance = 1e-12 * bbox_diagonal(m);
+  // +infinity (a component no sample reaches yet) only equals itself
+  auto same_distance = [&](double a, double b) { return std::isinf(b) ? a == b : std::abs(a - b) <= tolerance; };
   std::vector<double> nearest(m.number_of_vertices(), inf);
   for(std::size_t k = 0; k < s.samples.size(); ++k) {
     if(k > 0) {
       const double farthest = nearest[argmax(nearest)];
-      EXPECT_NEAR(nearest[s.samples[k].idx()], farthest, tolerance) << name << ": sample " << k;
+      EXPECT_PRED2(same_distance, nearest[s.samples[k].idx()], farthest) << name << ": sample " << k;
       EXPECT_LE(s.radii[k], s.radii[k - 1]) << name << ": sample " << k;
     }
     const std::vector<double> d = solve(m, s.samples[k]);
     for(std::size_t v = 0; v < nearest.size(); ++v)
       nearest[v] = std::min(nearest[v], d[v]);
-    EXPECT_NEAR(s.radii[k], nearest[argmax(nearest)], tolerance) << name << ": radius after sample " << k;
+    EXPECT_PRED2(same_distance, s.radii[k], nearest[argmax(nearest)]) << name << ": radius after sample " << k;
   }
   return nearest;
 }
@@ -114,6 +117,28 @@ TEST(Farthest_point_sampling, many_samples_stay_exact)
   const Sampling s = sample(m, 300);
   ASSERT_EQ(s.samples.size(), 300u);
   expect_each_sample_farthest(m, s, "elephant");
+}
+
+// Meshes the package has never seen: the mushroom scaled by 1e-3 and 1e3, subdivided,
+// jittered, cut open, and beside a copy of the elephant: every sample is still the exact
+// farthest, the first samples of the two components before any second one.
+TEST(Farthest_point_sampling, exact_on_transformed_and_disconnected_meshes)
+{
+  const Mesh& mushroom = test_mesh("mushroom");
+  for(Transform t : {SCALED_DOWN, SCALED_UP, LOOP_SUBDIVIDED, JITTERED, CUT_OPEN}) {
+    const Mesh m = transformed(mushroom, t);
+    const Sampling s = sample(m, 10);
+    ASSERT_EQ(s.samples.size(), 10u) << transform_names[t];
+    expect_each_sample_farthest(m, s, std::string("mushroom ") + transform_names[t]);
+  }
+  const Mesh both = disjoint_union({&mushroom, &test_mesh("elephant")});
+  const Sampling s = sample(both, 10);
+  ASSERT_EQ(s.samples.size(), 10u);
+  EXPECT_EQ(s.radii[0], inf);
+  EXPECT_TRUE(std::isfinite(s.radii[1]));
+  const std::size_t first_part = mushroom.number_of_vertices();
+  EXPECT_NE(s.samples[0].idx() < first_part, s.samples[1].idx() < first_part);
+  expect_each_sample_farthest(both, s, "mushroom and elephant");
 }
 
 // PVTP gives the same samples, radii, distances and labels for every thread count, and the

@@ -4,6 +4,7 @@
 // that holds no vertex of the mesh.
 #include "support/analytic_surfaces.h"
 #include "support/checks.h"
+#include "support/mesh_transformations.h"
 #include "support/solve.h"
 
 #include <CGAL_ext/Surface_mesh_geodesic_paths.h>
@@ -229,6 +230,32 @@ TEST(Geodesic_voronoi, a_source_alone_in_its_component_owns_it)
     EXPECT_EQ(d.vertex_cell[v], 2u) << "vertex " << v;
   EXPECT_EQ(d.dual_edges, (std::vector<std::pair<std::size_t, std::size_t>>{{0, 1}}));
   EXPECT_TRUE(d.vertices.empty());
+}
+
+// Meshes the package has never seen: the elephant scaled by 1e-3 and 1e3, subdivided,
+// jittered, cut open, and beside a copy of the mushroom (two components, sources in both): the
+// diagram stays exact, its cells the labels of one propagation.
+TEST(Geodesic_voronoi, exact_on_transformed_and_disconnected_meshes)
+{
+  const Mesh& elephant = test_mesh("elephant");
+  auto sources_of = [](const Mesh& m) {
+    std::vector<Face_location> sources;
+    for(Vertex v : spread_vertices(m, 4, 11))
+      sources.push_back(corner_location(m, v));
+    sources.push_back(location(m.number_of_faces() - 10, 0.25, 0.4));
+    return sources;
+  };
+  for(Transform t : {SCALED_DOWN, SCALED_UP, LOOP_SUBDIVIDED, JITTERED, CUT_OPEN}) {
+    const Mesh m = transformed(elephant, t);
+    const std::vector<Face_location> sources = sources_of(m);
+    expect_exact_diagram(m, sources, CGAL_ext::geodesic_voronoi_diagram(m, sources),
+                         std::string("elephant ") + transform_names[t]);
+  }
+  const Mesh both = disjoint_union({&elephant, &test_mesh("mushroom")});
+  const std::vector<Face_location> sources = sources_of(both);
+  ASSERT_LT(sources.front().first.idx(), elephant.number_of_faces());
+  ASSERT_GE(sources.back().first.idx(), elephant.number_of_faces());
+  expect_exact_diagram(both, sources, CGAL_ext::geodesic_voronoi_diagram(both, sources), "elephant and mushroom");
 }
 
 TEST(Geodesic_voronoi, bad_requests_are_named)
