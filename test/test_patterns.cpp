@@ -347,6 +347,22 @@ TEST(Pattern_detection, Same_instances_at_any_scale)
   }
 }
 
+// Two copies of the scene side by side, not connected, the patch marked in the first: the
+// second copy's instances are found too (region growing cannot cross to it; the seeds reach
+// it), the same number in both.
+TEST(Pattern_detection, Instances_in_another_component_are_found)
+{
+  const Small_scene scene = ten_bumps();
+  const Mesh copy = translated(scene.mesh, Vector(2, 0, 0));
+  const Mesh both = disjoint_union({&scene.mesh, &copy});
+  const auto found = CGAL_ext::detect_repetitive_patterns<CGAL::Parallel_if_available_tag>(both, scene.patch);
+  std::size_t in_first = 0, in_second = 0;
+  for(const auto& instance : found.instances)
+    ++(instance.center_vertex.idx() < scene.mesh.number_of_vertices() ? in_first : in_second);
+  EXPECT_GE(in_first, 9u);
+  EXPECT_EQ(in_second, in_first);
+}
+
 // The callback hears the fraction done, never decreasing, through every step to 1; its false
 // stops the run with an error.
 TEST(Pattern_detection, Progress_reaches_the_callback_which_can_stop_the_run)
