@@ -47,7 +47,7 @@ struct Voronoi_vertex_found
 
 /// Finds the bisectors and Voronoi vertices face by face. In a face, the nearest source is
 /// known along the boundary (each edge is cut where the windows kept on it change, and every
-/// change of the nearest source between two points is found by bisection to round-off); then:
+/// change of the nearest source between two points is found by bisection to 1e-12 of the segment); then:
 /// - two changes: one bisector between them, its inner points found across the chord;
 /// - three changes (three cells): one Voronoi vertex, found by shrinking a triangle around it
 ///   to round-off, and three bisectors to it; more changes around as many distinct cells, in a
@@ -201,7 +201,7 @@ private:
   }
 
   /// Every change of the nearest source between p (label lp) and q (label lq), in order from p,
-  /// each located by bisection to round-off.
+  /// each located by bisection to `crossing_precision` of the segment.
   void find_changes(const Face_point& p, int lp, const Face_point& q, int lq, std::vector<Crossing>& out,
                     int depth = 0) const
   {
@@ -209,10 +209,8 @@ private:
       return;
     double lo = 0, hi = 1;
     Face_point a = p, c = q;
-    for(int i = 0; i < 64; ++i) {
+    for(int i = 0; i < 64 && hi - lo > crossing_precision; ++i) {
       const double mid = 0.5 * (lo + hi);
-      if(!(mid > lo && mid < hi))
-        break;
       const Face_point m = along(p, q, mid);
       const int lm = label(m);
       if(lm == lp) {
@@ -519,6 +517,10 @@ private:
   }
 
   static constexpr int side_samples = 4;
+  /// Where bisection stops, as a fraction of the segment searched (of a side: at most an edge
+  /// long): 1e-12 of an edge is far below the 1e-9 of the diagonal that a bisector point is
+  /// promised to, and takes 40 halvings where round-off took 53 to 64.
+  static constexpr double crossing_precision = 1e-12;
   static constexpr std::size_t faces_per_block = 256;
   static constexpr double blip = 1e-9; // in barycentric coordinates
   static constexpr int refine_depth = 2;
