@@ -229,7 +229,7 @@ TEST_P(Parallel_on_mesh, pavtp_equals_avtp_for_every_thread_count)
 
 // Under ThreadSanitizer (about 10x slower) without fandisk, the slowest of them there (a
 // quarter of that run): the races it could show are in the code the other meshes run.
-#ifdef __SANITIZE_THREAD__
+#ifdef CGAL_EXT_THREAD_SANITIZER
 #define CGAL_EXT_PARALLEL_TEST_MESHES "elephant", "mushroom", "cactus", "knot1"
 #else
 #define CGAL_EXT_PARALLEL_TEST_MESHES "elephant", "mushroom", "fandisk", "cactus", "knot1"

@@ -120,7 +120,7 @@ TEST(Farthest_point_sampling, many_samples_stay_exact)
 }
 
 // Meshes the package has never seen: the mushroom scaled by 1e-3 and 1e3, subdivided,
-// jittered, cut open, and beside a copy of the elephant: every sample is still the exact
+// jittered, cut open, and with a copy of the elephant as a second component: every sample is still the exact
 // farthest, the first samples of the two components before any second one.
 TEST(Farthest_point_sampling, exact_on_transformed_and_disconnected_meshes)
 {

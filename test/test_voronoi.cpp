@@ -233,7 +233,7 @@ TEST(Geodesic_voronoi, a_source_alone_in_its_component_owns_it)
 }
 
 // Meshes the package has never seen: the elephant scaled by 1e-3 and 1e3, subdivided,
-// jittered, cut open, and beside a copy of the mushroom (two components, sources in both): the
+// jittered, cut open, and with a copy of the mushroom as a second component (sources in both): the
 // diagram stays exact, its cells the labels of one propagation.
 TEST(Geodesic_voronoi, exact_on_transformed_and_disconnected_meshes)
 {

@@ -80,7 +80,7 @@ struct Geodesic_voronoi_diagram
 /// `CGAL::Parallel_tag`), whose windows give the distance and nearest source at any point of
 /// the surface. In each face the nearest source is followed along the boundary (each edge is
 /// cut where its windows change, and every change of the nearest source is located by bisection
-/// to 1e-12 of an edge); a face crossed by two cells holds one bisector, whose inner points are found
+/// to 1e-12 of the segment searched, at most an edge); a face crossed by two cells holds one bisector, whose inner points are found
 /// the same way; a face where three cells meet holds a Voronoi vertex, found by shrinking a
 /// triangle with a corner in each cell to round-off; a face with more is cut in four, up to five
 /// times. Every point reported is as far from its two (or three) sources as the solver's
