@@ -544,15 +544,27 @@ inline void attach_to_vertices(std::vector<Bisector_piece>& pieces, std::vector<
   auto near = [&](const std::array<double, 3>& a, const std::array<double, 3>& b) {
     return std::abs(a[0] - b[0]) <= tolerance && std::abs(a[1] - b[1]) <= tolerance && std::abs(a[2] - b[2]) <= tolerance;
   };
+  // the vertices of each cell, in increasing order (a piece looks only at those of its second
+  // cell, the larger index: a cell no source reaches is -1)
+  std::vector<std::vector<std::size_t>> vertices_of_cell;
+  for(std::size_t v = 0; v < vertices.size(); ++v)
+    for(int c : vertices[v].sources) {
+      if(c < 0)
+        continue;
+      if(std::size_t(c) >= vertices_of_cell.size())
+        vertices_of_cell.resize(std::size_t(c) + 1);
+      vertices_of_cell[std::size_t(c)].push_back(v);
+    }
+  const std::vector<std::size_t> no_vertex;
   std::size_t kept = 0;
   for(std::size_t i = 0; i < pieces.size(); ++i) {
     Bisector_piece& p = pieces[i];
     if(near(first_point[i], last_point[i]))
       continue;
-    for(std::size_t v = 0; v < vertices.size(); ++v) {
+    const std::size_t cell = std::size_t(p.second_source);
+    for(std::size_t v : p.second_source >= 0 && cell < vertices_of_cell.size() ? vertices_of_cell[cell] : no_vertex) {
       const std::vector<int>& s = vertices[v].sources;
-      const bool of_both = std::count(s.begin(), s.end(), p.first_source) && std::count(s.begin(), s.end(), p.second_source);
-      if(!of_both)
+      if(!std::count(s.begin(), s.end(), p.first_source))
         continue;
       if(p.start_vertex < 0 && near(first_point[i], vertex_point[v]))
         p.start_vertex = int(v);
