@@ -12,7 +12,6 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
-#include <limits>
 #include <random>
 #include <set>
 #include <string>
@@ -328,7 +327,10 @@ TEST(Pattern_detection, Same_instances_at_any_scale)
     return centres;
   };
   const std::vector<Vertex> at_one = centres_of(scene.mesh, scene.patch);
-  EXPECT_GE(at_one.size(), 9u);
+  ASSERT_GE(at_one.size(), 9u);
+  Truth found_at_one;
+  for(Vertex a : at_one)
+    found_at_one.centres.push_back(scene.mesh.point(a));
   const double edge = mean_edge_length(scene.mesh);
   for(double factor : {0.125, 2.0, 1e-3, 1e3}) {
     const auto patch = CGAL_ext::Pattern_patch<Mesh>::disk(scene.patch.center, factor * scene.patch.radius);
@@ -338,12 +340,9 @@ TEST(Pattern_detection, Same_instances_at_any_scale)
       continue;
     }
     ASSERT_EQ(centres.size(), at_one.size()) << "scaled by " << factor;
-    for(Vertex c : centres) {
-      double nearest = std::numeric_limits<double>::infinity();
-      for(Vertex a : at_one)
-        nearest = std::min(nearest, std::sqrt(CGAL::squared_distance(scene.mesh.point(c), scene.mesh.point(a))));
-      EXPECT_LE(nearest, 2 * edge) << "scaled by " << factor << ": the instance at " << c;
-    }
+    for(Vertex c : centres)
+      EXPECT_LE(found_at_one.distance_to_nearest(scene.mesh.point(c)), 2 * edge)
+        << "scaled by " << factor << ": the instance at " << c;
   }
 }
 
@@ -358,20 +357,17 @@ TEST(Pattern_detection, Instances_in_another_component_are_found)
   const Mesh copy = translated(scene.mesh, shift);
   const Mesh both = disjoint_union({&scene.mesh, &copy});
   const auto found = CGAL_ext::detect_repetitive_patterns<CGAL::Parallel_if_available_tag>(both, scene.patch);
-  std::vector<Point> first, second;
+  Truth first; // the instances found in the first copy
+  std::vector<Point> second;
   for(const auto& instance : found.instances)
-    (instance.center_vertex.idx() < scene.mesh.number_of_vertices() ? first : second)
+    (instance.center_vertex.idx() < scene.mesh.number_of_vertices() ? first.centres : second)
       .push_back(both.point(instance.center_vertex));
-  EXPECT_GE(first.size(), 9u);
-  EXPECT_GE(second.size() + 1, first.size());
-  EXPECT_LE(second.size(), first.size() + 1);
+  ASSERT_GE(first.centres.size(), 9u);
+  EXPECT_GE(second.size() + 1, first.centres.size());
+  EXPECT_LE(second.size(), first.centres.size() + 1);
   const double edge = mean_edge_length(scene.mesh);
-  for(const Point& c : second) {
-    double nearest = std::numeric_limits<double>::infinity();
-    for(const Point& a : first)
-      nearest = std::min(nearest, std::sqrt(CGAL::squared_distance(c - shift, a)));
-    EXPECT_LE(nearest, 2 * edge) << "the instance at " << c;
-  }
+  for(const Point& c : second)
+    EXPECT_LE(first.distance_to_nearest(c - shift), 2 * edge) << "the instance at " << c;
 }
 
 // The callback hears the fraction done, never decreasing, through every step to 1; its false

@@ -47,6 +47,16 @@ Face_location planar_location(const Mesh& m, const Point& p)
   return Face_location(Face(), Barycentric{{0., 0., 0.}});
 }
 
+/// `count` vertices spread over the mesh (from `offset`), and a point of a face, as sources.
+std::vector<Face_location> spread_sources(const Mesh& m, int count, std::size_t offset, const Face_location& face_point)
+{
+  std::vector<Face_location> sources;
+  for(Vertex v : spread_vertices(m, count, offset))
+    sources.push_back(corner_location(m, v));
+  sources.push_back(face_point);
+  return sources;
+}
+
 template <class Diagram>
 void expect_exact_diagram(const Mesh& m, const std::vector<Face_location>& sources, const Diagram& d,
                           const std::string& label)
@@ -99,10 +109,8 @@ TEST(Geodesic_voronoi, bisectors_and_vertices_are_exact_on_real_meshes)
 {
   for(const char* name : {"elephant", "mushroom"}) {
     const Mesh& m = test_mesh(name);
-    std::vector<Face_location> sources;
-    for(Vertex v : spread_vertices(m, 5, 3))
-      sources.push_back(corner_location(m, v));
-    sources.push_back(location(m.number_of_faces() / 3, 0.3, 0.3));
+    const std::vector<Face_location> sources =
+      spread_sources(m, 5, 3, location(m.number_of_faces() / 3, 0.3, 0.3));
     const auto d = CGAL_ext::geodesic_voronoi_diagram(m, sources);
     expect_exact_diagram(m, sources, d, name);
     EXPECT_GE(d.vertices.size(), 2u) << name;
@@ -238,13 +246,7 @@ TEST(Geodesic_voronoi, a_source_alone_in_its_component_owns_it)
 TEST(Geodesic_voronoi, exact_on_transformed_and_disconnected_meshes)
 {
   const Mesh& elephant = test_mesh("elephant");
-  auto sources_of = [](const Mesh& m) {
-    std::vector<Face_location> sources;
-    for(Vertex v : spread_vertices(m, 4, 11))
-      sources.push_back(corner_location(m, v));
-    sources.push_back(location(m.number_of_faces() - 10, 0.25, 0.4));
-    return sources;
-  };
+  auto sources_of = [](const Mesh& m) { return spread_sources(m, 4, 11, location(m.number_of_faces() - 10, 0.25, 0.4)); };
   for(Transform t : {SCALED_DOWN, SCALED_UP, LOOP_SUBDIVIDED, JITTERED, CUT_OPEN}) {
     const Mesh m = transformed(elephant, t);
     const std::vector<Face_location> sources = sources_of(m);

@@ -199,6 +199,9 @@ struct Truth
         best = i;
     return best;
   }
+
+  /// How far `p` lies from the nearest planted centre.
+  double distance_to_nearest(const Point& p) const { return std::sqrt(CGAL::squared_distance(p, centres[nearest(p)])); }
 };
 
 /// How found instances compare with the planted ones: a found centre is right when it lies
