@@ -162,7 +162,7 @@ void geodesic_distances(const TriangleMesh& tm, VertexDistanceMap vertex_distanc
     return;
   }
 
-  const internal::Mesh_setup<TriangleMesh, Vertex_point_map> mesh(tm, np);
+  internal::Mesh_setup<TriangleMesh, Vertex_point_map> mesh(tm, np);
   internal::VTP_solver solver(mesh.cache(), settings, parallel);
   for(const internal::Source_point& s : mesh.source_points(sources))
     solver.add_source(s);
@@ -170,6 +170,7 @@ void geodesic_distances(const TriangleMesh& tm, VertexDistanceMap vertex_distanc
     for(auto v : parameters::get_parameter(np, internal_np::stop_vertices))
       solver.add_stop_vertex(mesh.index(v));
   }
+  mesh.release_positions(); // the sources are placed: distances need no more
   const double seconds_setup = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   internal::run_solver<parallel>(solver, settings.number_of_threads);
   mesh.write_vertex_distances(vertex_distance_map, solver.distances());

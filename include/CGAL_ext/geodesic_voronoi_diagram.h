@@ -195,6 +195,7 @@ geodesic_voronoi_diagram(const TriangleMesh& tm, const Sources& sources,
     if(piece.end_vertex >= 0)
       piece.end_vertex = kept_as[std::size_t(piece.end_vertex)];
   }
+  internal::add_cells_of_bisector_ends(pieces, first, last, voronoi_vertices, vertex_point, tolerance);
   internal::attach_to_vertices(pieces, first, last, voronoi_vertices, vertex_point, tolerance);
   std::set<std::pair<std::size_t, std::size_t>> pairs;
   for(const auto& line : internal::join_pieces(pieces, first, last, tolerance)) {

@@ -92,7 +92,7 @@ public:
   /// A stored window in the frame of half-edge h of its edge.
   Window_geometry in_frame_of(const Edge_window& w, int h) const
   {
-    return h == reference(h) ? w.geometry : mirrored(w.geometry, m_mesh.frame[h].length);
+    return h == reference(h) ? w.geometry : mirrored(w.geometry, m_mesh.length(h));
   }
 
   /// See `Object_pool::use_one_slot_per_thread()`.
@@ -112,7 +112,7 @@ public:
   void insert(const Window_geometry& g, int h, int source, std::size_t slot, Insertion_output& out)
   {
     const int e = reference(h);
-    const double length = m_mesh.frame[h].length;
+    const double length = m_mesh.length(h);
     const Window_geometry c = h == e ? g : mirrored(g, length);
 
     std::vector<std::pair<double, double>>& pieces = out.new_pieces; // what the new window keeps

@@ -193,7 +193,7 @@ public:
       if(c.kind == Candidate::VERTEX)
         p = Surface_location::at_vertex(c.index);
       else {
-        p = on_edge(c.index, c.x / m_mesh.frame[c.index].length);
+        p = on_edge(c.index, c.x / m_mesh.length(c.index));
         if(p.kind == Surface_location::EDGE) {
           face_beyond = Mesh_cache::face(m_mesh.opposite(c.index));
           left = c.distance - c.segment;
@@ -325,7 +325,7 @@ private:
   {
     const std::array<double, 2> q = m_mesh.point_in_frame(h, b);
     const double qx = q[0], qy = q[1];
-    const double tolerance = path_window_end_ratio * m_mesh.frame[h].length;
+    const double tolerance = path_window_end_ratio * m_mesh.length(h);
     for(const Edge_window* ew = m_windows.windows_of_edge(h); ew; ew = ew->next) {
       if(ew->halfedge != h)
         continue; // enters the face on the other side
@@ -359,7 +359,7 @@ private:
   int exit_halfedge(int h, double x, const Window_geometry& w) const
   {
     const int o = m_mesh.opposite(h);
-    const Halfedge_frame& f = m_mesh.frame[o];
+    const Halfedge_frame f = m_mesh.frame(o);
     // In o's frame: the crossing, the pseudo-source (turned by a half turn) and the apex.
     const double px = f.length - x, sx = f.length - w.sx, sy = -w.sy;
     const double cross = (f.apex_x - px) * sy - f.apex_y * (sx - px);

@@ -96,6 +96,8 @@ public:
 
   const TriangleMesh& mesh() const { return *m_tm; }
   const Mesh_cache& cache() const { return *m_cache; }
+  /// See `Mesh_cache::release_positions()`.
+  void release_positions() { m_cache->release_positions(); }
   const VertexPointMap& vertex_point_map() const { return m_vpm; }
   /// Seconds taken to build the cache and check the mesh.
   double seconds() const { return m_seconds; }

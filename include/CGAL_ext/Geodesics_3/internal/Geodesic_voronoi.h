@@ -268,7 +268,7 @@ private:
       const double s0 = from.b[std::size_t((k + 1) % 3)], s1 = to.b[std::size_t((k + 1) % 3)];
       if(s0 == s1)
         return;
-      const double length = m_mesh.frame[h].length;
+      const double length = m_mesh.length(h);
       for(const Edge_window* w = m_windows.windows_of_edge(h); w; w = w->next) {
         const Window_geometry g = m_windows.in_frame_of(*w, h);
         for(double x : {g.b0, g.b1})
@@ -475,7 +475,7 @@ private:
       return;
     const Face_point m = along(p, q, 0.5);
     // the chord in the plane of the face: corner 0 at the origin, corner 1 on +x
-    const Halfedge_frame& f = m_mesh.frame[3 * p.face];
+    const Halfedge_frame f = m_mesh.frame(3 * p.face);
     auto to_plane = [&](const Face_point& x) { return m_mesh.point_in_frame(3 * p.face, x.b); };
     auto from_plane = [&](double x, double y) {
       Face_point r;
@@ -533,6 +533,54 @@ private:
   std::size_t m_unresolved = 0;
 };
 
+/// The Voronoi vertices of each cell, in increasing order (a cell no source reaches, -1, has none).
+inline std::vector<std::vector<std::size_t>> vertices_of_cells(const std::vector<Voronoi_vertex_found>& vertices)
+{
+  std::vector<std::vector<std::size_t>> of_cell;
+  for(std::size_t v = 0; v < vertices.size(); ++v)
+    for(int c : vertices[v].sources) {
+      if(c < 0)
+        continue;
+      if(std::size_t(c) >= of_cell.size())
+        of_cell.resize(std::size_t(c) + 1);
+      of_cell[std::size_t(c)].push_back(v);
+    }
+  return of_cell;
+}
+
+inline bool within(const std::array<double, 3>& a, const std::array<double, 3>& b, double tolerance)
+{
+  return std::abs(a[0] - b[0]) <= tolerance && std::abs(a[1] - b[1]) <= tolerance && std::abs(a[2] - b[2]) <= tolerance;
+}
+
+/// Where more than three cells meet at one point (four symmetric sources), round-off may find
+/// the vertex of only three of them, and the bisectors of the others end there all the same: a
+/// bisector of cells a and b that ends (within `tolerance`) at a vertex of a is equidistant
+/// from a and b there, so the vertex is one of b too.
+inline void add_cells_of_bisector_ends(const std::vector<Bisector_piece>& pieces,
+                                       const std::vector<std::array<double, 3>>& first_point,
+                                       const std::vector<std::array<double, 3>>& last_point,
+                                       std::vector<Voronoi_vertex_found>& vertices,
+                                       const std::vector<std::array<double, 3>>& vertex_point, double tolerance)
+{
+  const std::vector<std::vector<std::size_t>> of_cell = vertices_of_cells(vertices);
+  for(std::size_t i = 0; i < pieces.size(); ++i) {
+    const Bisector_piece& p = pieces[i];
+    for(int cell : {p.first_source, p.second_source}) {
+      if(cell < 0 || std::size_t(cell) >= of_cell.size())
+        continue;
+      for(std::size_t v : of_cell[std::size_t(cell)]) {
+        if(!within(first_point[i], vertex_point[v], tolerance) && !within(last_point[i], vertex_point[v], tolerance))
+          continue;
+        std::vector<int>& s = vertices[v].sources;
+        for(int c : {p.first_source, p.second_source})
+          if(c >= 0 && !std::count(s.begin(), s.end(), c))
+            s.insert(std::upper_bound(s.begin(), s.end(), c), c);
+      }
+    }
+  }
+}
+
 /// Ends of pieces that lie at a Voronoi vertex of their two cells (within `tolerance`: a part
 /// cut down near a vertex leaves short pieces that end there) become that vertex; pieces shorter
 /// than `tolerance` from end to end are dropped.
@@ -541,20 +589,9 @@ inline void attach_to_vertices(std::vector<Bisector_piece>& pieces, std::vector<
                                const std::vector<Voronoi_vertex_found>& vertices,
                                const std::vector<std::array<double, 3>>& vertex_point, double tolerance)
 {
-  auto near = [&](const std::array<double, 3>& a, const std::array<double, 3>& b) {
-    return std::abs(a[0] - b[0]) <= tolerance && std::abs(a[1] - b[1]) <= tolerance && std::abs(a[2] - b[2]) <= tolerance;
-  };
-  // the vertices of each cell, in increasing order (a piece looks only at those of its second
-  // cell, the larger index: a cell no source reaches is -1)
-  std::vector<std::vector<std::size_t>> vertices_of_cell;
-  for(std::size_t v = 0; v < vertices.size(); ++v)
-    for(int c : vertices[v].sources) {
-      if(c < 0)
-        continue;
-      if(std::size_t(c) >= vertices_of_cell.size())
-        vertices_of_cell.resize(std::size_t(c) + 1);
-      vertices_of_cell[std::size_t(c)].push_back(v);
-    }
+  auto near = [&](const std::array<double, 3>& a, const std::array<double, 3>& b) { return within(a, b, tolerance); };
+  // a piece looks only at the vertices of its second cell, the larger index
+  const std::vector<std::vector<std::size_t>> vertices_of_cell = vertices_of_cells(vertices);
   const std::vector<std::size_t> no_vertex;
   std::size_t kept = 0;
   for(std::size_t i = 0; i < pieces.size(); ++i) {

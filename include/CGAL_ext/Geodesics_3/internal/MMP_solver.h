@@ -200,12 +200,12 @@ private:
     Window_geometry w = m_windows.in_frame_of(ew, h);
     if(!keep_window(w, h, m_distance[m_mesh.source(h)], m_distance[m_mesh.target(h)]))
       return;
-    const Halfedge_frame& f = m_mesh.frame[h];
+    const Halfedge_frame f = m_mesh.frame(h);
     const double crossing = apex_crossing(w, f.apex_x, f.apex_y);
     double p;
     const double via = distance_to_apex(w, crossing, f.apex_x, f.apex_y, p);
     out.apex = Vertex_update{m_mesh.apex(h), ew.source, via};
-    make_children(w, face_crossing(m_mesh, h), crossing, crossing, m_min_window_length,
+    make_children(w, face_crossing(m_mesh, h, f), crossing, crossing, m_min_window_length,
                   [&](int g, const Window_geometry& child, bool) {
                     out.children[out.number_of_children++] = New_window{child, g, ew.source};
                   });

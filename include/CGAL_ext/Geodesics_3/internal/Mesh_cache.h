@@ -54,7 +54,10 @@ struct Mesh_cache
   std::vector<std::array<double, 3>> position; // per vertex
   std::vector<std::int32_t> corner_vertex;     // per half-edge: its source vertex
   std::vector<std::int32_t> opposite_halfedge; // per half-edge, -1 on the border
-  std::vector<Halfedge_frame> frame;           // per half-edge
+  std::vector<double> halfedge_length;         // per half-edge
+  // per face f: the apex of half-edge 3f in the frame of 3f; with the lengths, the frames of the
+  // face's other two half-edges follow (see `frame`)
+  std::vector<std::array<double, 2>> first_apex;
   std::vector<double> corner_angle;            // per half-edge: the angle at its source vertex; only while built
   std::vector<std::int32_t> first_outgoing;    // per vertex, -1 if isolated; a border one first
   std::vector<std::uint8_t> is_border_vertex;  // per vertex
@@ -105,6 +108,11 @@ struct Mesh_cache
   bool is_face_changed(int f) const { return !face_state.empty() && face_state[std::size_t(f)] != 0; }
   bool is_face_removed(int f) const { return !face_state.empty() && (face_state[std::size_t(f)] & face_removed); }
 
+  /// Frees the positions, for a caller that wants distances only and has placed its sources:
+  /// the propagation reads the frames, and only the placing of face points, paths and the
+  /// Voronoi diagram's points read positions after `finish()`.
+  void release_positions() { std::vector<std::array<double, 3>>().swap(position); }
+
   /// A point of the caller's face `f` (barycentric coordinates `b` in its corner order) as a
   /// point of a face of the cache: itself unless the face was changed or removed.
   void relocate_face_point(int& f, std::array<double, 3>& b) const;
@@ -129,12 +137,37 @@ struct Mesh_cache
       f(u);
   }
 
+  double length(int h) const { return halfedge_length[std::size_t(h)]; }
+
+  /// The frame of half-edge h. Only the frame of the face's first half-edge is stored; the other
+  /// two are that triangle seen from another side, which costs a division here but saves two
+  /// thirds of the memory that frames per half-edge would take.
+  Halfedge_frame frame(int h) const
+  {
+    const std::array<double, 2>& c = first_apex[std::size_t(face(h))];
+    const double len = halfedge_length[std::size_t(h)];
+    switch(h % 3) {
+    case 0:
+      return Halfedge_frame{len, c[0], c[1]};
+    case 1: { // B -> C, apex A; in the first frame A = (0, 0), B = (l, 0), C = c
+      const double l = halfedge_length[std::size_t(h - 1)];
+      const double ratio = l / len;
+      return Halfedge_frame{len, (l - c[0]) * ratio, c[1] * ratio};
+    }
+    default: { // C -> A, apex B
+      const double l = halfedge_length[std::size_t(h - 2)];
+      const double inverse = 1 / len;
+      return Halfedge_frame{len, (c[0] * (c[0] - l) + c[1] * c[1]) * inverse, c[1] * l * inverse};
+    }
+    }
+  }
+
   /// The point of face(h) with barycentric coordinates b (in the order of the face's corners)
   /// in the frame of h: h's source at the origin, its target at (length, 0), the apex above.
   std::array<double, 2> point_in_frame(int h, const std::array<double, 3>& b) const
   {
     const int k = h % 3;
-    const Halfedge_frame& f = frame[h];
+    const Halfedge_frame f = frame(h);
     return {{b[(k + 1) % 3] * f.length + b[(k + 2) % 3] * f.apex_x, b[(k + 2) % 3] * f.apex_y}};
   }
 
@@ -205,7 +238,8 @@ inline bool Mesh_cache::compute_frames()
 {
   bool none_degenerate = true;
   const std::size_t nh = corner_vertex.size();
-  frame.resize(nh);
+  halfedge_length.resize(nh);
+  first_apex.resize(number_of_faces);
   corner_angle.resize(nh);
   double length_sum = 0;
   std::size_t edge_count = 0;
@@ -214,6 +248,7 @@ inline bool Mesh_cache::compute_frames()
     if(is_face_removed(int(f)))
       continue;
     const std::array<double, 3>* p[3];
+    Halfedge_frame frames[3];
     for(int k = 0; k < 3; ++k)
       p[k] = &position[corner_vertex[3 * f + k]];
     for(int k = 0; k < 3; ++k) {
@@ -228,7 +263,8 @@ inline bool Mesh_cache::compute_frames()
       const double twice_area = std::sqrt(cr[0] * cr[0] + cr[1] * cr[1] + cr[2] * cr[2]);
       const double dot = ab[0] * ac[0] + ab[1] * ac[1] + ab[2] * ac[2];
       const std::size_t h = 3 * f + k;
-      frame[h] = Halfedge_frame{len, dot / len, twice_area / len};
+      frames[k] = Halfedge_frame{len, dot / len, twice_area / len};
+      halfedge_length[h] = len;
       corner_angle[h] = std::atan2(twice_area, dot);
       const int o = opposite_halfedge[h];
       if(o < 0 || static_cast<std::size_t>(o) > h) {
@@ -236,8 +272,9 @@ inline bool Mesh_cache::compute_frames()
         ++edge_count;
       }
     }
-    const double a = frame[3 * f].length, b = frame[3 * f + 1].length, c = frame[3 * f + 2].length;
-    const double area = 0.5 * a * frame[3 * f].apex_y;
+    first_apex[f] = {{frames[0].apex_x, frames[0].apex_y}};
+    const double a = frames[0].length, b = frames[1].length, c = frames[2].length;
+    const double area = 0.5 * a * frames[0].apex_y;
     if(is_degenerate_shape(a, b, c, 2 * area))
       none_degenerate = false;
     anisotropy_sum += 0.5 * (a + b + c) * std::max({a, b, c}) / (2 * std::sqrt(3.) * area);

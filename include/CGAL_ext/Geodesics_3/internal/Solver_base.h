@@ -74,14 +74,14 @@ protected:
   bool keep_window(Window_geometry& w, int h, double d_from, double d_to) const
   {
     double key;
-    return trim_by_edge_vertices(w, m_mesh.frame[h].length, d_from, d_to, key) && key <= m_window_limit;
+    return trim_by_edge_vertices(w, m_mesh.length(h), d_from, d_to, key) && key <= m_window_limit;
   }
 
   /// The same for a list window, whose end distances are kept.
   bool keep_window(Window& w, int h, double d_from, double d_to) const
   {
     double key;
-    return trim_by_edge_vertices(w, w.d0, w.d1, m_mesh.frame[h].length, d_from, d_to, key) && key <= m_window_limit;
+    return trim_by_edge_vertices(w, w.d0, w.d1, m_mesh.length(h), d_from, d_to, key) && key <= m_window_limit;
   }
 
   template <class Pool>

@@ -116,13 +116,13 @@ template <class Relax, class Add>
 void emit_vertex_windows(const Mesh_cache& m, int v, double sigma, Relax relax, Add add)
 {
   m.for_each_outgoing(v, [&](int h) {
-    relax(m.target(h), sigma + m.frame[h].length);
+    relax(m.target(h), sigma + m.length(h));
     const int across = Mesh_cache::next(h); // the edge opposite v in this face
-    relax(m.target(across), sigma + m.frame[Mesh_cache::prev(h)].length);
+    relax(m.target(across), sigma + m.length(Mesh_cache::prev(h)));
     const int g = m.opposite(across);
     if(g < 0)
       return;
-    const Halfedge_frame& f = m.frame[across];
+    const Halfedge_frame f = m.frame(across);
     Window_geometry w;
     w.b0 = 0;
     w.b1 = f.length;
@@ -165,7 +165,7 @@ void emit_face_point_windows(const Mesh_cache& m, const Source_point& s, Relax r
   auto emit_in_face = [&](int face, const std::array<double, 3>& b) {
     for(int k = 0; k < 3; ++k) {
       const int h = 3 * face + k;
-      const Halfedge_frame& f = m.frame[h];
+      const Halfedge_frame f = m.frame(h);
       const std::array<double, 2> q = m.point_in_frame(h, b);
       const double x = q[0], y = q[1];
       relax(m.source(h), norm2d(x, y)); // distance to corner k, the origin of this frame

@@ -539,7 +539,7 @@ private:
     task.apex_distance = infinity();
     task.apex_source = -1;
     windows.clear();
-    const Halfedge_frame& f = m_mesh.frame[h];
+    const Halfedge_frame f = m_mesh.frame(h);
     const double d_from = m_distance[m_mesh.source(h)];
     const double d_to = m_distance[m_mesh.target(h)];
     for(std::uint32_t i = task.input; i != Window_pool::nil;) {
@@ -570,7 +570,7 @@ private:
     task.apex_distance = best;
 
     const double d_apex = std::min(m_distance[m_mesh.apex(h)], best);
-    const Face_crossing across = face_crossing(m_mesh, h);
+    const Face_crossing across = face_crossing(m_mesh, h, f);
     for(const Window& w : windows) {
       const double crossing = apex_crossing(w, f.apex_x, f.apex_y);
       make_children(w, across, std::min(split, crossing), std::max(split, crossing), m_min_window_length,

@@ -345,18 +345,17 @@ inline bool make_child(const Window_geometry& w, double lo, double hi, const Chi
 
 /// Where the windows on half-edge h = (A -> B, apex C) go across its face: the half-edges beyond
 /// the edges A -> C and C -> B (-1 on the border; the first runs from A to C, the second from C to
-/// B), and those two edges in the frame of h.
+/// B), and those two edges in the frame of h (`f`, which is `m.frame(h)`).
 struct Face_crossing
 {
   int to_ac, to_cb;
   Child_edge ac, cb;
 };
 
-inline Face_crossing face_crossing(const Mesh_cache& m, int h)
+inline Face_crossing face_crossing(const Mesh_cache& m, int h, const Halfedge_frame& f)
 {
-  const Halfedge_frame& f = m.frame[h];
-  const double l_ac = m.frame[Mesh_cache::prev(h)].length;
-  const double l_cb = m.frame[Mesh_cache::next(h)].length;
+  const double l_ac = m.length(Mesh_cache::prev(h));
+  const double l_cb = m.length(Mesh_cache::next(h));
   return Face_crossing{m.opposite(Mesh_cache::prev(h)), m.opposite(Mesh_cache::next(h)),
                        Child_edge{0., 0., f.apex_x / l_ac, f.apex_y / l_ac, l_ac},
                        Child_edge{f.apex_x, f.apex_y, (f.length - f.apex_x) / l_cb, -f.apex_y / l_cb, l_cb}};
