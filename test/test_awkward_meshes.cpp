@@ -11,7 +11,10 @@
 #include <CGAL_ext/Geodesics_3/polyline_length.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <limits>
+#include <random>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -419,6 +422,77 @@ TEST(DegenerateTriangles, ZeroLengthEdgeInARealMeshMatchesTheCollapsedMesh)
 
 // ---------------------------------------------------------------------------------------------
 // Isolated vertices: +infinity, and no source on their own.
+
+// The cache stores a frame for the first half-edge of each face only and derives the other two
+// (Mesh_cache::frame): on thin, obtuse and needle-like triangles in any orientation, away from
+// the origin, each frame is the triangle seen from its half-edge up to what rounding the
+// coordinates allows: their last bit (eps R) turns the half-edge's direction by eps R / length,
+// which moves a point at the longest side's distance by eps R longest / length. The reference
+// is computed from the same coordinates in long double.
+TEST(MeshCache, DerivedFramesAreTheTriangleSeenFromEachSide)
+{
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-1., 1.);
+  const std::vector<std::array<Point, 3>> shapes{
+    {{Point(0, 0, 0), Point(1, 0, 0), Point(0.3, 0.8, 0)}},      // acute
+    {{Point(0, 0, 0), Point(1, 0, 0), Point(1.7, 0.2, 0)}},      // obtuse at B
+    {{Point(0, 0, 0), Point(1, 0, 0), Point(-0.6, 0.1, 0)}},     // obtuse at A
+    {{Point(0, 0, 0), Point(1, 0, 0), Point(0.5, 1e-7, 0)}},     // a cap, nearly flat
+    {{Point(0, 0, 0), Point(1, 0, 0), Point(1 + 1e-6, 2e-6, 0)}}, // a needle
+    {{Point(0, 0, 0), Point(1e-5, 0, 0), Point(0.4, 3e-6, 0)}}};  // a short side and two long
+  Mesh m;
+  std::vector<std::array<Point, 3>> placed;
+  for(int copy = 0; copy < 20; ++copy)
+    for(const auto& t : shapes) {
+      // a rotation (Gram-Schmidt of random vectors), a scale, and a shift of up to 100 sizes
+      const Vector a(u(rng), u(rng), u(rng)), b0(u(rng), u(rng), u(rng));
+      const Vector e0 = a / std::sqrt(a.squared_length());
+      const Vector b = b0 - (b0 * e0) * e0;
+      const Vector e1 = b / std::sqrt(b.squared_length());
+      const Vector e2 = CGAL::cross_product(e0, e1);
+      const double scale = std::pow(10., 3 * u(rng));
+      const Vector shift = 100 * scale * Vector(u(rng), u(rng), u(rng));
+      std::array<Point, 3> p;
+      for(int k = 0; k < 3; ++k)
+        p[k] = CGAL::ORIGIN + shift + scale * (t[k].x() * e0 + t[k].y() * e1 + t[k].z() * e2);
+      placed.push_back(p);
+      const Vertex v0 = m.add_vertex(p[0]), v1 = m.add_vertex(p[1]), v2 = m.add_vertex(p[2]);
+      m.add_face(v0, v1, v2);
+    }
+  CGAL_ext::Geodesics_3::internal::Mesh_cache cache;
+  CGAL_ext::Geodesics_3::internal::build_mesh_cache(m, get(CGAL::vertex_point, m), get(CGAL::vertex_index, m),
+                                                    get(CGAL::face_index, m), cache);
+  ASSERT_EQ(cache.number_of_faces, placed.size());
+  typedef std::array<long double, 3> Exact_vector;
+  auto minus = [](const Point& p, const Point& q) {
+    return Exact_vector{{(long double)p.x() - q.x(), (long double)p.y() - q.y(), (long double)p.z() - q.z()}};
+  };
+  auto dot = [](const Exact_vector& x, const Exact_vector& y) { return x[0] * y[0] + x[1] * y[1] + x[2] * y[2]; };
+  for(std::size_t f = 0; f < placed.size(); ++f) {
+    double coordinate = 0, longest = 0;
+    for(int k = 0; k < 3; ++k) {
+      coordinate = std::max({coordinate, std::abs(placed[f][k].x()), std::abs(placed[f][k].y()), std::abs(placed[f][k].z())});
+      longest = std::max(longest, std::sqrt(CGAL::squared_distance(placed[f][k], placed[f][(k + 1) % 3])));
+    }
+    for(int k = 0; k < 3; ++k) {
+      const int h = int(3 * f) + k;
+      // the mesh's vertices are numbered in the order added, three a face
+      const Point& a = placed[f][std::size_t(cache.source(h)) % 3];
+      const Point& b = placed[f][std::size_t(cache.target(h)) % 3];
+      const Point& c = placed[f][std::size_t(cache.apex(h)) % 3];
+      const Exact_vector ab = minus(b, a), ac = minus(c, a);
+      const Exact_vector cross{{ab[1] * ac[2] - ab[2] * ac[1], ab[2] * ac[0] - ab[0] * ac[2], ab[0] * ac[1] - ab[1] * ac[0]}};
+      const long double length = std::sqrt(dot(ab, ab));
+      const auto frame = cache.frame(h);
+      const double tolerance = 16 * std::numeric_limits<double>::epsilon() * coordinate * longest / double(length);
+      SCOPED_TRACE("face " + std::to_string(f) + ", half-edge " + std::to_string(k));
+      EXPECT_NEAR(frame.length, double(length), 4 * std::numeric_limits<double>::epsilon() * coordinate);
+      EXPECT_NEAR(frame.apex_x, double(dot(ab, ac) / length), tolerance);
+      EXPECT_NEAR(frame.apex_y, double(std::sqrt(dot(cross, cross)) / length), tolerance);
+      EXPECT_GT(frame.apex_y, 0.);
+    }
+  }
+}
 
 TEST(IsolatedVertex, IsUnreachedAndCannotBeTheOnlySource)
 {
