@@ -445,13 +445,14 @@ TEST(MeshCache, DerivedFramesAreTheTriangleSeenFromEachSide)
   for(int copy = 0; copy < 20; ++copy)
     for(const auto& t : shapes) {
       // a rotation (Gram-Schmidt of random vectors), a scale, and a shift of up to 100 sizes
-      const Vector a(u(rng), u(rng), u(rng)), b0(u(rng), u(rng), u(rng));
+      // (draws in braces: evaluated in order, the same triangles for every compiler)
+      const Vector a{u(rng), u(rng), u(rng)}, b0{u(rng), u(rng), u(rng)};
       const Vector e0 = a / std::sqrt(a.squared_length());
       const Vector b = b0 - (b0 * e0) * e0;
       const Vector e1 = b / std::sqrt(b.squared_length());
       const Vector e2 = CGAL::cross_product(e0, e1);
       const double scale = std::pow(10., 3 * u(rng));
-      const Vector shift = 100 * scale * Vector(u(rng), u(rng), u(rng));
+      const Vector shift = 100 * scale * Vector{u(rng), u(rng), u(rng)};
       std::array<Point, 3> p;
       for(int k = 0; k < 3; ++k)
         p[k] = CGAL::ORIGIN + shift + scale * (t[k].x() * e0 + t[k].y() * e1 + t[k].z() * e2);

@@ -177,6 +177,35 @@ TEST(Geodesic_voronoi, four_cells_meet_at_the_centre_of_a_square)
   }
 }
 
+// The step behind the test above, on its own: a bisector of cells a and b that ends at a vertex of
+// a makes the vertex one of b, and a cell so gained lets its own bisectors at that point in.
+TEST(Geodesic_voronoi, a_vertex_takes_the_cells_of_the_bisectors_that_end_at_it)
+{
+  using namespace CGAL_ext::Geodesics_3::internal;
+  std::vector<Voronoi_vertex_found> vertices(2);
+  vertices[0].sources = {0, 1, 3};
+  vertices[1].sources = {5, 6, 7};
+  const std::vector<std::array<double, 3>> vertex_point{{{0., 0., 0.}}, {{10., 0., 0.}}};
+  std::vector<Bisector_piece> pieces;
+  std::vector<std::array<double, 3>> first, last;
+  auto piece = [&](int a, int b, std::array<double, 3> from, std::array<double, 3> to) {
+    Bisector_piece p;
+    p.first_source = a;
+    p.second_source = b;
+    pieces.push_back(p);
+    first.push_back(from);
+    last.push_back(to);
+  };
+  piece(2, 4, {{0., -1., 0.}}, {{0., 1e-12, 0.}}); // reaches vertex 0 through cell 2 only
+  piece(1, 2, {{1e-12, 0., 0.}}, {{0., 1., 0.}});  // brings cell 2 to vertex 0
+  piece(3, 8, {{5., 5., 0.}}, {{6., 6., 0.}});     // ends at no vertex
+  piece(0, 9, {{0., 1e-3, 0.}}, {{0., 2., 0.}});   // ends near vertex 0, beyond the tolerance
+  piece(2, 5, {{9., 0., 0.}}, {{10., 0., 1e-12}}); // ends at vertex 1, a vertex of cell 5
+  add_cells_of_bisector_ends(pieces, first, last, vertices, vertex_point, 1e-9);
+  EXPECT_EQ(vertices[0].sources, (std::vector<int>{0, 1, 2, 3, 4}));
+  EXPECT_EQ(vertices[1].sources, (std::vector<int>{2, 5, 6, 7}));
+}
+
 // A face point at the middle of a face, with three others around it in the same face: its cell
 // is a small triangle inside the face, holding no vertex of the mesh, and is still found (three
 // bisectors around it, three Voronoi vertices, and its place in the dual graph).

@@ -556,26 +556,32 @@ inline bool within(const std::array<double, 3>& a, const std::array<double, 3>& 
 /// Where more than three cells meet at one point (four symmetric sources), round-off may find
 /// the vertex of only three of them, and the bisectors of the others end there all the same: a
 /// bisector of cells a and b that ends (within `tolerance`) at a vertex of a is equidistant
-/// from a and b there, so the vertex is one of b too.
+/// from a and b there, so the vertex is one of b too. Repeated until no vertex gains a cell: a
+/// cell gained lets the bisectors of its own neighbours at that point in (five or more cells).
 inline void add_cells_of_bisector_ends(const std::vector<Bisector_piece>& pieces,
                                        const std::vector<std::array<double, 3>>& first_point,
                                        const std::vector<std::array<double, 3>>& last_point,
                                        std::vector<Voronoi_vertex_found>& vertices,
                                        const std::vector<std::array<double, 3>>& vertex_point, double tolerance)
 {
-  const std::vector<std::vector<std::size_t>> of_cell = vertices_of_cells(vertices);
-  for(std::size_t i = 0; i < pieces.size(); ++i) {
-    const Bisector_piece& p = pieces[i];
-    for(int cell : {p.first_source, p.second_source}) {
-      if(cell < 0 || std::size_t(cell) >= of_cell.size())
-        continue;
-      for(std::size_t v : of_cell[std::size_t(cell)]) {
-        if(!within(first_point[i], vertex_point[v], tolerance) && !within(last_point[i], vertex_point[v], tolerance))
+  for(bool gained = true; gained;) {
+    gained = false;
+    const std::vector<std::vector<std::size_t>> of_cell = vertices_of_cells(vertices);
+    for(std::size_t i = 0; i < pieces.size(); ++i) {
+      const Bisector_piece& p = pieces[i];
+      for(int cell : {p.first_source, p.second_source}) {
+        if(cell < 0 || std::size_t(cell) >= of_cell.size())
           continue;
-        std::vector<int>& s = vertices[v].sources;
-        for(int c : {p.first_source, p.second_source})
-          if(c >= 0 && !std::count(s.begin(), s.end(), c))
-            s.insert(std::upper_bound(s.begin(), s.end(), c), c);
+        for(std::size_t v : of_cell[std::size_t(cell)]) {
+          if(!within(first_point[i], vertex_point[v], tolerance) && !within(last_point[i], vertex_point[v], tolerance))
+            continue;
+          std::vector<int>& s = vertices[v].sources;
+          for(int c : {p.first_source, p.second_source})
+            if(c >= 0 && !std::count(s.begin(), s.end(), c)) {
+              s.insert(std::upper_bound(s.begin(), s.end(), c), c);
+              gained = true;
+            }
+        }
       }
     }
   }

@@ -141,7 +141,8 @@ struct Mesh_cache
 
   /// The frame of half-edge h. Only the frame of the face's first half-edge is stored; the other
   /// two are that triangle seen from another side, which costs a division here but saves two
-  /// thirds of the memory that frames per half-edge would take.
+  /// thirds of the memory that frames per half-edge would take. (A removed face keeps the
+  /// values of the mesh as given; nothing asks for its frames.)
   Halfedge_frame frame(int h) const
   {
     const std::array<double, 2>& c = first_apex[std::size_t(face(h))];
