@@ -168,8 +168,7 @@ geodesic_voronoi_diagram(const TriangleMesh& tm, const Sources& sources,
   });
   for(std::size_t i = 0; i < by_x.size(); ++i)
     for(std::size_t j = i; j-- > 0 && found_point[by_x[i]][0] - found_point[by_x[j]][0] <= tolerance;) {
-      const std::array<double, 3>&x = found_point[by_x[i]], &y = found_point[by_x[j]];
-      if(std::abs(x[1] - y[1]) <= tolerance && std::abs(x[2] - y[2]) <= tolerance) {
+      if(internal::within(found_point[by_x[i]], found_point[by_x[j]], tolerance)) {
         root[by_x[i]] = root[by_x[j]];
         break;
       }

@@ -548,6 +548,8 @@ inline std::vector<std::vector<std::size_t>> vertices_of_cells(const std::vector
   return of_cell;
 }
 
+/// Whether two points are within `tolerance` of each other in every coordinate: how ends of
+/// pieces are joined, and found vertices merged.
 inline bool within(const std::array<double, 3>& a, const std::array<double, 3>& b, double tolerance)
 {
   return std::abs(a[0] - b[0]) <= tolerance && std::abs(a[1] - b[1]) <= tolerance && std::abs(a[2] - b[2]) <= tolerance;
@@ -595,23 +597,22 @@ inline void attach_to_vertices(std::vector<Bisector_piece>& pieces, std::vector<
                                const std::vector<Voronoi_vertex_found>& vertices,
                                const std::vector<std::array<double, 3>>& vertex_point, double tolerance)
 {
-  auto near = [&](const std::array<double, 3>& a, const std::array<double, 3>& b) { return within(a, b, tolerance); };
   // a piece looks only at the vertices of its second cell, the larger index
   const std::vector<std::vector<std::size_t>> vertices_of_cell = vertices_of_cells(vertices);
   const std::vector<std::size_t> no_vertex;
   std::size_t kept = 0;
   for(std::size_t i = 0; i < pieces.size(); ++i) {
     Bisector_piece& p = pieces[i];
-    if(near(first_point[i], last_point[i]))
+    if(within(first_point[i], last_point[i], tolerance))
       continue;
     const std::size_t cell = std::size_t(p.second_source);
     for(std::size_t v : p.second_source >= 0 && cell < vertices_of_cell.size() ? vertices_of_cell[cell] : no_vertex) {
       const std::vector<int>& s = vertices[v].sources;
       if(!std::count(s.begin(), s.end(), p.first_source))
         continue;
-      if(p.start_vertex < 0 && near(first_point[i], vertex_point[v]))
+      if(p.start_vertex < 0 && within(first_point[i], vertex_point[v], tolerance))
         p.start_vertex = int(v);
-      if(p.end_vertex < 0 && near(last_point[i], vertex_point[v]))
+      if(p.end_vertex < 0 && within(last_point[i], vertex_point[v], tolerance))
         p.end_vertex = int(v);
     }
     if(p.start_vertex >= 0 && p.start_vertex == p.end_vertex)
@@ -652,8 +653,7 @@ join_pieces(const std::vector<Bisector_piece>& pieces, const std::vector<std::ar
       const Bisector_piece &pa = pieces[a / 2], &pb = pieces[b / 2];
       if(mate[b] != none || a / 2 == b / 2 || pa.first_source != pb.first_source || pa.second_source != pb.second_source)
         continue;
-      const std::array<double, 3>&x = at(a), &y = at(b);
-      if(std::abs(x[1] - y[1]) <= tolerance && std::abs(x[2] - y[2]) <= tolerance) {
+      if(within(at(a), at(b), tolerance)) {
         mate[a] = b;
         mate[b] = a;
       }

@@ -249,35 +249,36 @@ inline bool Mesh_cache::compute_frames()
     if(is_face_removed(int(f)))
       continue;
     const std::array<double, 3>* p[3];
-    Halfedge_frame frames[3];
     for(int k = 0; k < 3; ++k)
       p[k] = &position[corner_vertex[3 * f + k]];
+    auto minus = [](const std::array<double, 3>& u, const std::array<double, 3>& v) {
+      return std::array<double, 3>{{u[0] - v[0], u[1] - v[1], u[2] - v[2]}};
+    };
+    auto norm = [](const std::array<double, 3>& u) { return std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]); };
     for(int k = 0; k < 3; ++k) {
-      const auto& a = *p[k];
-      const auto& b = *p[(k + 1) % 3];
-      const auto& c = *p[(k + 2) % 3];
-      const double ab[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
-      const double ac[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-      const double cr[3] = {ab[1] * ac[2] - ab[2] * ac[1], ab[2] * ac[0] - ab[0] * ac[2],
-                            ab[0] * ac[1] - ab[1] * ac[0]};
-      const double len = std::sqrt(ab[0] * ab[0] + ab[1] * ab[1] + ab[2] * ab[2]);
-      const double twice_area = std::sqrt(cr[0] * cr[0] + cr[1] * cr[1] + cr[2] * cr[2]);
-      const double dot = ab[0] * ac[0] + ab[1] * ac[1] + ab[2] * ac[2];
       const std::size_t h = 3 * f + k;
-      frames[k] = Halfedge_frame{len, dot / len, twice_area / len};
-      halfedge_length[h] = len;
-      corner_angle[h] = std::atan2(twice_area, dot);
+      halfedge_length[h] = norm(minus(*p[(k + 1) % 3], *p[k]));
       const int o = opposite_halfedge[h];
       if(o < 0 || static_cast<std::size_t>(o) > h) {
-        length_sum += len;
+        length_sum += halfedge_length[h];
         ++edge_count;
       }
     }
-    first_apex[f] = {{frames[0].apex_x, frames[0].apex_y}};
-    const double a = frames[0].length, b = frames[1].length, c = frames[2].length;
-    const double area = 0.5 * a * frames[0].apex_y;
-    if(is_degenerate_shape(a, b, c, 2 * area))
-      none_degenerate = false;
+    // the apex C of the first half-edge A -> B in its frame
+    const std::array<double, 3> ab = minus(*p[1], *p[0]), ac = minus(*p[2], *p[0]);
+    const double a = halfedge_length[3 * f], b = halfedge_length[3 * f + 1], c = halfedge_length[3 * f + 2];
+    const double twice_area = norm({{ab[1] * ac[2] - ab[2] * ac[1], ab[2] * ac[0] - ab[0] * ac[2], ab[0] * ac[1] - ab[1] * ac[0]}});
+    first_apex[f] = {{(ab[0] * ac[0] + ab[1] * ac[1] + ab[2] * ac[2]) / a, twice_area / a}};
+    const double area = 0.5 * a * first_apex[f][1];
+    if(is_degenerate_shape(a, b, c, 2 * area)) {
+      none_degenerate = false; // removed, and the frames computed again
+      continue;
+    }
+    // the corner angles from the frames the solvers use
+    for(int k = 0; k < 3; ++k) {
+      const Halfedge_frame fr = frame(int(3 * f) + k);
+      corner_angle[3 * f + k] = std::atan2(fr.apex_y, fr.apex_x);
+    }
     anisotropy_sum += 0.5 * (a + b + c) * std::max({a, b, c}) / (2 * std::sqrt(3.) * area);
   }
   mean_edge_length = edge_count ? length_sum / double(edge_count) : 0.;
