@@ -134,6 +134,64 @@ public:
     return within_limit(c.distance) ? c.distance : infinity();
   }
 
+  /// How the shortest way inside face f reaches the point of f with barycentric coordinates b:
+  /// distance sigma + |x - centre| for x in the plane of f, exact at the point and near it as
+  /// long as the same window, corner or source stays the best. The centre is given by
+  /// barycentric coordinates of f (of its plane: they may be negative). `source` is -1 when
+  /// nothing in f reaches the point.
+  struct Planar_way
+  {
+    std::array<double, 3> centre{{0., 0., 0.}};
+    double sigma = 0;
+    int source = -1;
+  };
+
+  Planar_way way_in_face(int f, const std::array<double, 3>& b) const
+  {
+    Candidate best;
+    best_in_face(f, b, best);
+    Planar_way way;
+    if(!within_limit(best.distance))
+      return way;
+    way.source = best.source;
+    if(best.kind == Candidate::WINDOW) {
+      // the pseudo-source, or the window's end when the ray to the point misses the window
+      const int h = best.index;
+      const Window_geometry& w = best.window;
+      const std::array<double, 2> q = m_mesh.point_in_frame(h, b);
+      const bool through_end = w.sx + (q[0] - w.sx) * (-w.sy) / (q[1] - w.sy) != best.x;
+      way.sigma = through_end ? distance_at(w, best.x) : w.sigma;
+      way.centre = through_end ? m_mesh.barycentric_in_frame(h, best.x, 0.) : m_mesh.barycentric_in_frame(h, w.sx, w.sy);
+    } else if(best.kind == Candidate::VERTEX) {
+      way.sigma = m_distance[best.index];
+      for(int k = 0; k < 3; ++k)
+        way.centre[std::size_t(k)] = m_mesh.source(3 * f + k) == best.index ? 1. : 0.;
+    } else {
+      way.centre = m_face_sources[std::size_t(best.index)].barycentric;
+    }
+    return way;
+  }
+
+  /// The same for a point p of the closure of face f (coordinates b in f) whose nearest source
+  /// is `nearest`: when the best way inside f comes from another source and p lies on an edge,
+  /// the best way inside the face beyond, unfolded into the plane of f.
+  Planar_way way_at(const Surface_location& p, int f, const std::array<double, 3>& b, int nearest) const
+  {
+    const Planar_way way = way_in_face(f, b);
+    if(p.kind != Surface_location::EDGE || way.source == nearest)
+      return way;
+    const int h = Mesh_cache::face(p.halfedge) == f ? p.halfedge : m_mesh.opposite(p.halfedge);
+    const int o = m_mesh.opposite(h);
+    if(o < 0)
+      return way;
+    Planar_way beyond = way_in_face(Mesh_cache::face(o), barycentric_in(Mesh_cache::face(o), p));
+    if(beyond.source != nearest)
+      return way;
+    const std::array<double, 2> c = m_mesh.point_in_frame(o, beyond.centre);
+    beyond.centre = m_mesh.barycentric_in_frame(h, m_mesh.length(h) - c[0], -c[1]);
+    return beyond;
+  }
+
   /// The shortest path from p back to its nearest source, p first; false (and an empty path)
   /// when no source reaches p.
   bool trace(const Surface_location& target, std::vector<Surface_location>& path) const

@@ -179,6 +179,7 @@ private:
   {
     Face_point point;
     int before, after;
+    Geodesic_path_tracer::Planar_way way_before; // how the cell before is reached there
   };
 
   // As the tracer's public queries see the point: coordinates below the snap are 0.
@@ -200,8 +201,86 @@ private:
     return r;
   }
 
+  /// The nearest source at a point of a face, and how the shortest way inside the face reaches it.
+  struct Probe
+  {
+    int label;
+    Geodesic_path_tracer::Planar_way way;
+  };
+
+  Probe probe(const Face_point& p) const
+  {
+    Probe r;
+    const Surface_location x = location(p);
+    const std::array<double, 3> b = snapped_barycentric(p.b);
+    if(x.kind == Surface_location::FACE) {
+      r.way = m_tracer.way_in_face(p.face, b);
+      r.label = r.way.source; // the tracer's label of a face point is that way's source
+    } else {
+      m_tracer.distance(x, r.label);
+      // a vertex's own distance may come through a face around it other than this one: no
+      // way is guessed there
+      if(x.kind == Surface_location::EDGE)
+        r.way = m_tracer.way_at(x, p.face, b, r.label);
+    }
+    return r;
+  }
+
+  /// A point of the plane of p's face, in the frame of its half-edge 3f.
+  std::array<double, 2> in_plane(const Face_point& p, const std::array<double, 3>& b) const
+  {
+    return m_mesh.point_in_frame(3 * p.face, b);
+  }
+
+  /// Where, in (lo, hi) of the segment from p to q, the way wp (which wins at lo) and the way
+  /// wq (which wins at hi) give equal distances, to `tolerance`: by regula falsi (Illinois) on
+  /// the difference of the two, which is smooth; false when that difference does not change
+  /// sign between lo and hi (one of the ways no longer wins there).
+  bool equal_distance_on_segment(const Face_point& p, const Face_point& q, const Geodesic_path_tracer::Planar_way& wp,
+                                 const Geodesic_path_tracer::Planar_way& wq, double lo, double hi, double tolerance,
+                                 double& t) const
+  {
+    const std::array<double, 2> p0 = in_plane(p, p.b), p1 = in_plane(p, q.b);
+    const std::array<double, 2> cp = in_plane(p, wp.centre), cq = in_plane(p, wq.centre);
+    auto difference = [&](double s) {
+      const double x = p0[0] + s * (p1[0] - p0[0]), y = p0[1] + s * (p1[1] - p0[1]);
+      return wp.sigma + norm2d(x - cp[0], y - cp[1]) - wq.sigma - norm2d(x - cq[0], y - cq[1]);
+    };
+    double a = lo, b = hi, ga = difference(a), gb = difference(b);
+    if(!(ga < 0 && gb > 0))
+      return false;
+    int kept_side = 0; // -1: a was kept by the last step, 1: b was
+    for(int i = 0; i < 64 && b - a > tolerance; ++i) {
+      const double c = (a * gb - b * ga) / (gb - ga);
+      if(!(c > a && c < b))
+        break;
+      const double gc = difference(c);
+      if(gc == 0) {
+        a = b = c;
+        break;
+      }
+      if(gc < 0) {
+        a = c;
+        ga = gc;
+        if(kept_side == 1)
+          gb *= 0.5;
+        kept_side = 1;
+      } else {
+        b = c;
+        gb = gc;
+        if(kept_side == -1)
+          ga *= 0.5;
+        kept_side = -1;
+      }
+    }
+    t = 0.5 * (a + b);
+    return t > lo && t < hi;
+  }
+
   /// Every change of the nearest source between p (label lp) and q (label lq), in order from p,
-  /// each located by bisection to `crossing_precision` of the segment.
+  /// each located to `crossing_precision` of the segment: where the ways that reach the two
+  /// ends of the bracket give equal distances, checked by the labels just before and after it
+  /// (two queries when those ways stay the best up to there), or else by halving the bracket.
   void find_changes(const Face_point& p, int lp, const Face_point& q, int lq, std::vector<Crossing>& out,
                     int depth = 0) const
   {
@@ -209,25 +288,54 @@ private:
       return;
     double lo = 0, hi = 1;
     Face_point a = p, c = q;
-    for(int i = 0; i < 64 && hi - lo > crossing_precision; ++i) {
-      const double mid = 0.5 * (lo + hi);
-      const Face_point m = along(p, q, mid);
-      const int lm = label(m);
-      if(lm == lp) {
-        lo = mid;
-        a = m;
-      } else if(lm == lq) {
-        hi = mid;
-        c = m;
-      } else { // a third cell in between: the changes on each side of it
-        if(depth < 8) {
-          find_changes(a, lp, m, lm, out, depth + 1);
-          find_changes(m, lm, c, lq, out, depth + 1);
+    Geodesic_path_tracer::Planar_way wa = probe(p).way, wc = probe(q).way;
+    // When the ways give no guess (an end at a vertex or beyond the face, or a change where
+    // other ways take over), the change is most often right at an end: each is looked at once.
+    bool looked_near_p = false, looked_near_q = false;
+    bool halve = false; // the last guess did not halve the bracket: halve it now
+    for(int i = 0; i < 128 && hi - lo > crossing_precision; ++i) {
+      const double width = hi - lo;
+      const double step = 0.25 * crossing_precision;
+      double guess = 0.5 * (lo + hi);
+      const bool from_ways =
+        !halve && wa.source == lp && wc.source == lq && equal_distance_on_segment(p, q, wa, wc, lo, hi, 0.1 * step, guess);
+      double looks[2] = {guess - step, guess + step};
+      if(!from_ways) {
+        if(!looked_near_p) {
+          looked_near_p = true;
+          looks[0] = lo + 2 * step;
+        } else if(!looked_near_q) {
+          looked_near_q = true;
+          looks[0] = hi - 2 * step;
+        } else {
+          looks[0] = guess;
         }
-        return;
       }
+      for(int k = 0; k < (from_ways ? 2 : 1); ++k) {
+        const double t = looks[k];
+        if(!(t > lo && t < hi))
+          continue;
+        const Face_point m = along(p, q, t);
+        const Probe pm = probe(m);
+        if(pm.label == lp) {
+          lo = t;
+          a = m;
+          wa = pm.way;
+        } else if(pm.label == lq) {
+          hi = t;
+          c = m;
+          wc = pm.way;
+        } else { // a third cell in between: the changes on each side of it
+          if(depth < 8) {
+            find_changes(a, lp, m, pm.label, out, depth + 1);
+            find_changes(m, pm.label, c, lq, out, depth + 1);
+          }
+          return;
+        }
+      }
+      halve = from_ways && hi - lo > 0.5 * width;
     }
-    out.push_back(Crossing{along(p, q, 0.5 * (lo + hi)), lp, lq});
+    out.push_back(Crossing{along(p, q, 0.5 * (lo + hi)), lp, lq, wa});
   }
 
   /// The changes along the side from corner `from` to corner `to` of a part (labels lf, lt),
@@ -312,7 +420,9 @@ private:
         }
       }
       if(n >= 3 && chain_of_distinct_cells(crossings)) {
-        int v = n == 3 ? find_voronoi_vertex(crossings, seen, out) : -1;
+        int v = n == 3 ? vertex_of_ways(corner, crossings, seen, out) : -1;
+        if(v < 0 && n == 3)
+          v = find_voronoi_vertex(crossings, seen, out);
         if(v < 0 && size_of(corner) <= vertex_size) // cut down to round-off around the vertex
           v = add_vertex(corner, crossings, out);
         if(v >= 0) {
@@ -386,6 +496,75 @@ private:
           return false;
     }
     return true;
+  }
+
+  /// The point where the three cells of `crossings` meet inside the part, from the ways that
+  /// reach each cell at the crossings: where the three give equal distances (Newton's method in
+  /// the plane of the face), kept only if the labels of three points around it, a round-off
+  /// distance away towards a boundary point of each cell, are the three cells. -1 otherwise.
+  int vertex_of_ways(const std::array<Face_point, 3>& corner, const std::vector<Crossing>& crossings,
+                     const std::vector<std::pair<Face_point, int>>& seen, Output& out) const
+  {
+    const int f = corner[0].face;
+    std::array<int, 3> cell;
+    std::array<std::array<double, 2>, 3> centre;
+    std::array<double, 3> sigma;
+    std::array<double, 2> x{{0., 0.}};
+    for(std::size_t k = 0; k < 3; ++k) {
+      const Crossing& c = crossings[k];
+      if(c.way_before.source != c.before)
+        return -1;
+      cell[k] = c.before;
+      centre[k] = in_plane(corner[0], c.way_before.centre);
+      sigma[k] = c.way_before.sigma;
+      const std::array<double, 2> at = in_plane(corner[0], c.point.b);
+      x[0] += at[0] / 3;
+      x[1] += at[1] / 3;
+    }
+    const double size = std::max({m_mesh.length(3 * f), m_mesh.length(3 * f + 1), m_mesh.length(3 * f + 2)});
+    bool converged = false;
+    for(int i = 0; i < 32 && !converged; ++i) {
+      std::array<double, 3> d, gx, gy;
+      for(std::size_t k = 0; k < 3; ++k) {
+        const double ux = x[0] - centre[k][0], uy = x[1] - centre[k][1], r = norm2d(ux, uy);
+        if(!(r > 0))
+          return -1;
+        d[k] = sigma[k] + r;
+        gx[k] = ux / r;
+        gy[k] = uy / r;
+      }
+      // D0 - D1 = 0 and D0 - D2 = 0
+      const double f1 = d[0] - d[1], f2 = d[0] - d[2];
+      const double a = gx[0] - gx[1], b = gy[0] - gy[1], c = gx[0] - gx[2], e = gy[0] - gy[2];
+      const double det = a * e - b * c;
+      if(!(std::abs(det) > 0))
+        return -1;
+      const double dx = (f1 * e - b * f2) / det, dy = (a * f2 - c * f1) / det;
+      x[0] -= dx;
+      x[1] -= dy;
+      converged = norm2d(dx, dy) <= 1e-15 * size;
+    }
+    Face_point v;
+    v.face = f;
+    v.b = m_mesh.barycentric_in_frame(3 * f, x[0], x[1]);
+    if(!converged || !holds(corner, v))
+      return -1;
+    const double reach = vertex_check_distance * size;
+    for(std::size_t k = 0; k < 3; ++k) {
+      const auto in_cell = std::find_if(seen.begin(), seen.end(), [&](const auto& s) { return s.second == cell[k]; });
+      if(in_cell == seen.end())
+        return -1;
+      const std::array<double, 2> toward = in_plane(corner[0], in_cell->first.b);
+      const double ux = toward[0] - x[0], uy = toward[1] - x[1], r = norm2d(ux, uy);
+      if(!(r > reach))
+        return -1;
+      Face_point near;
+      near.face = f;
+      near.b = m_mesh.barycentric_in_frame(3 * f, x[0] + reach * ux / r, x[1] + reach * uy / r);
+      if(!holds(corner, near) || label(near) != cell[k])
+        return -1;
+    }
+    return add_vertex({{v, v, v}}, crossings, out);
   }
 
   /// The point where the three cells of `crossings` meet inside the part: a triangle with a
@@ -517,9 +696,12 @@ private:
   }
 
   static constexpr int side_samples = 4;
-  /// Where bisection stops, as a fraction of the segment searched (of a side: at most an edge
-  /// long): 1e-12 of an edge is far below the 1e-9 of the diagonal that a bisector point is
-  /// promised to, and takes 40 halvings where round-off took 53 to 64.
+  /// How far from a Voronoi vertex found from the ways its three cells are checked, as a
+  /// fraction of the face's longest edge.
+  static constexpr double vertex_check_distance = 1e-10;
+  /// Where the search of a change stops, as a fraction of the segment searched (of a side: at
+  /// most an edge long): 1e-12 of an edge is far below the 1e-9 of the diagonal that a bisector
+  /// point is promised to.
   static constexpr double crossing_precision = 1e-12;
   static constexpr std::size_t faces_per_block = 256;
   static constexpr double blip = 1e-9; // in barycentric coordinates

@@ -172,6 +172,19 @@ struct Mesh_cache
     return {{b[(k + 1) % 3] * f.length + b[(k + 2) % 3] * f.apex_x, b[(k + 2) % 3] * f.apex_y}};
   }
 
+  /// The barycentric coordinates (of the plane of face(h), in the order of its corners) of the
+  /// point (x, y) of the frame of h: the inverse of `point_in_frame`.
+  std::array<double, 3> barycentric_in_frame(int h, double x, double y) const
+  {
+    const std::size_t k = std::size_t(h % 3);
+    const Halfedge_frame f = frame(h);
+    std::array<double, 3> b;
+    b[(k + 2) % 3] = y / f.apex_y;
+    b[(k + 1) % 3] = (x - b[(k + 2) % 3] * f.apex_x) / f.length;
+    b[k] = 1 - b[(k + 1) % 3] - b[(k + 2) % 3];
+    return b;
+  }
+
   /// Calls `f(h)` for each half-edge leaving `v`, turning around `v` from the border (if any).
   template <class Function>
   void for_each_outgoing(int v, Function f) const
