@@ -11,6 +11,7 @@
 #include <CGAL_ext/geodesic_voronoi_diagram.h>
 
 #include <memory>
+#include <random>
 #include <set>
 #include <vector>
 
@@ -122,6 +123,58 @@ TEST(Geodesic_voronoi, bisectors_and_vertices_are_exact_on_real_meshes)
       EXPECT_EQ(p.dual_triangles, d.dual_triangles) << name << ", " << threads << " threads";
     }
   }
+}
+
+// The way the tracer says a point is reached (what the diagram's search of changes and of
+// Voronoi vertices works from) comes from the point's nearest source and gives its distance:
+// inside a face, and on an edge, where the winning way may come from the face beyond (unfolded
+// across the edge); points are drawn anywhere, and in the face of a face-point source.
+TEST(Geodesic_voronoi, the_way_a_point_is_reached_gives_its_distance)
+{
+  namespace internal = CGAL_ext::Geodesics_3::internal;
+  const Mesh& m = test_mesh("elephant");
+  internal::Mesh_cache cache;
+  internal::build_mesh_cache(m, get(CGAL::vertex_point, m), get(CGAL::vertex_index, m), get(CGAL::face_index, m), cache);
+  const internal::Solver_settings settings =
+    internal::read_solver_settings(CGAL_ext::parameters::default_values(), CGAL_ext::FWP_MMP);
+  internal::MMP_solver solver(cache, settings, false);
+  for(Vertex v : spread_vertices(m, 12, 5)) {
+    internal::Source_point s;
+    s.vertex = int(v.idx());
+    solver.add_source(s);
+  }
+  internal::Source_point in_face;
+  in_face.face = int(cache.number_of_faces / 2);
+  in_face.barycentric = {{0.2, 0.5, 0.3}};
+  solver.add_source(in_face);
+  solver.run();
+  const internal::Geodesic_path_tracer tracer(solver.windows(), solver.distances(), solver.nearest_sources(),
+                                              solver.sources(), solver.max_distance());
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(0., 1.);
+  std::uniform_int_distribution<int> face(0, int(cache.number_of_faces) - 1);
+  std::size_t edge_points = 0;
+  for(int i = 0; i < 4000; ++i) {
+    const int f = i % 8 == 0 ? in_face.face : face(rng);
+    std::array<double, 3> b{{u(rng), u(rng), u(rng)}};
+    if(i % 2 == 1)
+      b[std::size_t(i % 3)] = 0; // a point of an edge
+    const double sum = b[0] + b[1] + b[2];
+    for(double& c : b)
+      c /= sum;
+    const internal::Surface_location p = internal::surface_location(cache, f, b);
+    int nearest = -1;
+    const double d = tracer.distance(p, nearest);
+    ASSERT_GE(nearest, 0);
+    const internal::Geodesic_path_tracer::Planar_way way = tracer.way_at(p, f, b, nearest);
+    EXPECT_EQ(way.source, nearest) << "face " << f << ", point " << i;
+    EXPECT_NEAR(way.distance, d, 1e-12 * (d + cache.mean_edge_length)) << "face " << f << ", point " << i;
+    edge_points += p.kind == internal::Surface_location::EDGE;
+    const std::array<double, 2> x = cache.point_in_frame(3 * f, b), c = cache.point_in_frame(3 * f, way.centre);
+    EXPECT_NEAR(way.sigma + std::hypot(x[0] - c[0], x[1] - c[1]), d, 1e-12 * (d + cache.mean_edge_length))
+      << "face " << f << ", point " << i;
+  }
+  EXPECT_GT(edge_points, 1000u);
 }
 
 // On a flat square the bisectors are straight: every point is at equal Euclidean distance from

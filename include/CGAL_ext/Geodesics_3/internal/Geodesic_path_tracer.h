@@ -135,14 +135,15 @@ public:
   }
 
   /// How the shortest way inside face f reaches the point of f with barycentric coordinates b:
-  /// distance sigma + |x - centre| for x in the plane of f, exact at the point and near it as
-  /// long as the same window, corner or source stays the best. The centre is given by
+  /// its length `distance` there, and, for points of the plane of f near it, sigma + |x - centre|
+  /// as long as the same window, corner or source stays the best. The centre is given by
   /// barycentric coordinates of f (of its plane: they may be negative). `source` is -1 when
   /// nothing in f reaches the point.
   struct Planar_way
   {
     std::array<double, 3> centre{{0., 0., 0.}};
     double sigma = 0;
+    double distance = std::numeric_limits<double>::infinity();
     int source = -1;
   };
 
@@ -154,14 +155,13 @@ public:
     if(!within_limit(best.distance))
       return way;
     way.source = best.source;
+    way.distance = best.distance;
     if(best.kind == Candidate::WINDOW) {
       // the pseudo-source, or the window's end when the ray to the point misses the window
       const int h = best.index;
       const Window_geometry& w = best.window;
-      const std::array<double, 2> q = m_mesh.point_in_frame(h, b);
-      const bool through_end = w.sx + (q[0] - w.sx) * (-w.sy) / (q[1] - w.sy) != best.x;
-      way.sigma = through_end ? distance_at(w, best.x) : w.sigma;
-      way.centre = through_end ? m_mesh.barycentric_in_frame(h, best.x, 0.) : m_mesh.barycentric_in_frame(h, w.sx, w.sy);
+      way.sigma = best.through_end ? distance_at(w, best.x) : w.sigma;
+      way.centre = best.through_end ? m_mesh.barycentric_in_frame(h, best.x, 0.) : m_mesh.barycentric_in_frame(h, w.sx, w.sy);
     } else if(best.kind == Candidate::VERTEX) {
       way.sigma = m_distance[best.index];
       for(int k = 0; k < 3; ++k)
@@ -173,19 +173,20 @@ public:
   }
 
   /// The same for a point p of the closure of face f (coordinates b in f) whose nearest source
-  /// is `nearest`: when the best way inside f comes from another source and p lies on an edge,
-  /// the best way inside the face beyond, unfolded into the plane of f.
+  /// is `nearest`: for a point of an edge, the shorter of the best ways inside f and inside the
+  /// face beyond (unfolded into the plane of f), among those from `nearest` (the best inside f
+  /// if neither is).
   Planar_way way_at(const Surface_location& p, int f, const std::array<double, 3>& b, int nearest) const
   {
     const Planar_way way = way_in_face(f, b);
-    if(p.kind != Surface_location::EDGE || way.source == nearest)
+    if(p.kind != Surface_location::EDGE)
       return way;
     const int h = Mesh_cache::face(p.halfedge) == f ? p.halfedge : m_mesh.opposite(p.halfedge);
     const int o = m_mesh.opposite(h);
     if(o < 0)
       return way;
     Planar_way beyond = way_in_face(Mesh_cache::face(o), barycentric_in(Mesh_cache::face(o), p));
-    if(beyond.source != nearest)
+    if(beyond.source != nearest || (way.source == nearest && way.distance <= beyond.distance))
       return way;
     const std::array<double, 2> c = m_mesh.point_in_frame(o, beyond.centre);
     beyond.centre = m_mesh.barycentric_in_frame(h, m_mesh.length(h) - c[0], -c[1]);
@@ -313,6 +314,7 @@ private:
     int index = -1;  // WINDOW: the half-edge crossed; VERTEX: the vertex; SOURCE: in m_face_sources
     double x = 0;    // WINDOW: where, from the source of the half-edge
     double segment = 0; // WINDOW: the length from the point to the crossing
+    bool through_end = false; // WINDOW: the ray to the point misses the window: through its end
     Window_geometry window{0., 0., 0., 0., 0.}; // WINDOW: the window, in the frame of `index`
     int face = -1;   // SOURCE: the face
     int source = -1; // the source the path starts from
@@ -402,6 +404,7 @@ private:
         best.index = h;
         best.x = crossing;
         best.segment = segment;
+        best.through_end = crossing != x;
         best.source = ew->source;
         best.window = w;
         if(d <= good_enough)

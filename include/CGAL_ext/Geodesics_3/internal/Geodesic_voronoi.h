@@ -16,6 +16,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -47,10 +48,12 @@ struct Voronoi_vertex_found
 
 /// Finds the bisectors and Voronoi vertices face by face. In a face, the nearest source is
 /// known along the boundary (each edge is cut where the windows kept on it change, and every
-/// change of the nearest source between two points is found by bisection to 1e-12 of the segment); then:
+/// change of the nearest source between two points is located to 1e-12 of the segment, from
+/// the ways that reach its two sides, checked by labels); then:
 /// - two changes: one bisector between them, its inner points found across the chord;
-/// - three changes (three cells): one Voronoi vertex, found by shrinking a triangle around it
-///   to round-off, and three bisectors to it; more changes around as many distinct cells, in a
+/// - three changes (three cells): one Voronoi vertex, where the three cells' ways give equal
+///   distances (or else found by shrinking a triangle around it to round-off), and three
+///   bisectors to it; more changes around as many distinct cells, in a
 ///   part cut down to round-off: a Voronoi vertex of all of them (four cells meet at the middle
 ///   of four symmetric sources);
 /// - four, one cell on two opposite arcs of the boundary: it runs across the part, and the two
@@ -250,7 +253,7 @@ private:
     if(!(ga < 0 && gb > 0))
       return false;
     int kept_side = 0; // -1: a was kept by the last step, 1: b was
-    for(int i = 0; i < 64 && b - a > tolerance; ++i) {
+    for(int i = 0; i < max_search_steps && b - a > tolerance; ++i) {
       const double c = (a * gb - b * ga) / (gb - ga);
       if(!(c > a && c < b))
         break;
@@ -273,8 +276,11 @@ private:
         kept_side = -1;
       }
     }
-    t = 0.5 * (a + b);
-    return t > lo && t < hi;
+    const double root = 0.5 * (a + b);
+    if(!(root > lo && root < hi))
+      return false;
+    t = root;
+    return true;
   }
 
   /// Every change of the nearest source between p (label lp) and q (label lq), in order from p,
@@ -293,7 +299,7 @@ private:
     // other ways take over), the change is most often right at an end: each is looked at once.
     bool looked_near_p = false, looked_near_q = false;
     bool halve = false; // the last guess did not halve the bracket: halve it now
-    for(int i = 0; i < 128 && hi - lo > crossing_precision; ++i) {
+    for(int i = 0; i < max_search_steps && hi - lo > crossing_precision; ++i) {
       const double width = hi - lo;
       const double step = 0.25 * crossing_precision;
       double guess = 0.5 * (lo + hi);
@@ -522,9 +528,14 @@ private:
       x[1] += at[1] / 3;
     }
     const double size = std::max({m_mesh.length(3 * f), m_mesh.length(3 * f + 1), m_mesh.length(3 * f + 2)});
+    const double reach = vertex_check_distance * size;
+    if(size_of(corner) * size < 4 * reach)
+      return -1; // no room around it for the check: a part cut down near round-off
+    // Newton's method on D0 - D1 = 0, D0 - D2 = 0; done when both are round-off of the distances
+    std::array<double, 3> d;
     bool converged = false;
-    for(int i = 0; i < 32 && !converged; ++i) {
-      std::array<double, 3> d, gx, gy;
+    for(int i = 0; i < max_newton_steps && !converged; ++i) {
+      std::array<double, 3> gx, gy;
       for(std::size_t k = 0; k < 3; ++k) {
         const double ux = x[0] - centre[k][0], uy = x[1] - centre[k][1], r = norm2d(ux, uy);
         if(!(r > 0))
@@ -533,23 +544,29 @@ private:
         gx[k] = ux / r;
         gy[k] = uy / r;
       }
-      // D0 - D1 = 0 and D0 - D2 = 0
       const double f1 = d[0] - d[1], f2 = d[0] - d[2];
+      const double round_off = 8 * std::numeric_limits<double>::epsilon() * std::max({d[0], d[1], d[2]});
+      converged = std::abs(f1) <= round_off && std::abs(f2) <= round_off;
+      if(converged)
+        break;
       const double a = gx[0] - gx[1], b = gy[0] - gy[1], c = gx[0] - gx[2], e = gy[0] - gy[2];
       const double det = a * e - b * c;
       if(!(std::abs(det) > 0))
         return -1;
-      const double dx = (f1 * e - b * f2) / det, dy = (a * f2 - c * f1) / det;
-      x[0] -= dx;
-      x[1] -= dy;
-      converged = norm2d(dx, dy) <= 1e-15 * size;
+      x[0] -= (f1 * e - b * f2) / det;
+      x[1] -= (a * f2 - c * f1) / det;
     }
     Face_point v;
     v.face = f;
     v.b = m_mesh.barycentric_in_frame(3 * f, x[0], x[1]);
     if(!converged || !holds(corner, v))
       return -1;
-    const double reach = vertex_check_distance * size;
+    // the ways' common distance is the point's distance (the ways are the winners there)
+    int nearest = -1;
+    const double at_v = m_tracer.distance(location(v), nearest);
+    if(std::find(cell.begin(), cell.end(), nearest) == cell.end() ||
+       !(std::abs(at_v - d[0]) <= vertex_distance_tolerance * (d[0] + size)))
+      return -1;
     for(std::size_t k = 0; k < 3; ++k) {
       const auto in_cell = std::find_if(seen.begin(), seen.end(), [&](const auto& s) { return s.second == cell[k]; });
       if(in_cell == seen.end())
@@ -659,9 +676,7 @@ private:
     auto from_plane = [&](double x, double y) {
       Face_point r;
       r.face = p.face;
-      r.b[2] = y / f.apex_y;
-      r.b[1] = (x - r.b[2] * f.apex_x) / f.length;
-      r.b[0] = 1 - r.b[1] - r.b[2];
+      r.b = m_mesh.barycentric_in_frame(3 * p.face, x, y);
       return r;
     };
     const auto pp = to_plane(p), qq = to_plane(q), mm = to_plane(m);
@@ -699,10 +714,19 @@ private:
   /// How far from a Voronoi vertex found from the ways its three cells are checked, as a
   /// fraction of the face's longest edge.
   static constexpr double vertex_check_distance = 1e-10;
+  /// How close the tracer's distance at such a vertex must be to the ways' common distance
+  /// there (relative): round-off, far below the 1e-9 of the diagonal the vertices are promised to.
+  static constexpr double vertex_distance_tolerance = 1e-12;
+  /// Newton's method converges in a few steps from the crossings' centroid when the ways are
+  /// right; when it does not, the triangle shrinking takes over.
+  static constexpr int max_newton_steps = 16;
   /// Where the search of a change stops, as a fraction of the segment searched (of a side: at
   /// most an edge long): 1e-12 of an edge is far below the 1e-9 of the diagonal that a bisector
   /// point is promised to.
   static constexpr double crossing_precision = 1e-12;
+  /// A failed guess is followed by a halving: this many steps halve the bracket at least 62
+  /// times, past the 40 that the precision needs.
+  static constexpr int max_search_steps = 128;
   static constexpr std::size_t faces_per_block = 256;
   static constexpr double blip = 1e-9; // in barycentric coordinates
   static constexpr int refine_depth = 2;
