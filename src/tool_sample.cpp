@@ -123,6 +123,8 @@ int run_sample(const Sample_options& options)
       << "windows_created=" << result.stats.windows_created << "\n"
       << "windows_per_sample=" << double(result.stats.windows_created) / double(result.samples.size()) << "\n"
       << "peak_windows=" << result.stats.peak_windows << "\n"
+      << "batched_runs_kept=" << result.stats.batched_runs_kept << "\n"
+      << "batched_runs_undone=" << result.stats.batched_runs_undone << "\n"
       << "peak_rss_mb=" << peak_rss_mb() << "\n";
     std::cerr << s.str() << std::flush;
   }

@@ -9,6 +9,7 @@
 
 #include <CGAL_ext/Surface_mesh_geodesic_paths.h>
 #include <CGAL_ext/geodesic_distance_matrix.h>
+#include <CGAL_ext/farthest_point_sampling.h>
 #include <CGAL_ext/geodesic_voronoi_diagram.h>
 #include <CGAL_ext/Geodesics_3/internal/Parallel_for.h>
 
@@ -641,6 +642,40 @@ TEST(Geodesic_voronoi_parallel, the_same_diagram_for_every_thread_count)
     ASSERT_EQ(many.vertices.size(), one.vertices.size());
     for(std::size_t i = 0; i < one.vertices.size(); ++i)
       EXPECT_EQ(many.vertices[i].point.point, one.vertices[i].point.point);
+  }
+}
+
+// Farthest-point sampling runs several samples at once on two threads or more, each in a
+// solver of its own, and keeps a run only when it read nothing the runs before it changed: the
+// same samples, radii, distances and labels as on one thread.
+TEST(Farthest_point_sampling_parallel, batched_runs_give_the_samples_of_one_thread)
+{
+  const Mesh& m = test_mesh("elephant");
+  auto sample = [&](int threads, std::vector<double>& distances, std::vector<long>& labels,
+                    CGAL_ext::Geodesic_statistics& statistics) {
+    std::vector<Vertex> samples;
+    auto distance = get(CGAL::dynamic_vertex_property_t<double>(), m);
+    auto label = get(CGAL::dynamic_vertex_property_t<long>(), m);
+    CGAL_ext::farthest_point_sampling<CGAL::Parallel_tag>(
+      m, 60, std::back_inserter(samples),
+      number_of_threads(threads).vertex_distance_map(distance).vertex_source_map(label).statistics(statistics));
+    distances.clear();
+    labels.clear();
+    for(Vertex v : vertices(m)) {
+      distances.push_back(get(distance, v));
+      labels.push_back(get(label, v));
+    }
+    return samples;
+  };
+  std::vector<double> d1, d;
+  std::vector<long> l1, l;
+  CGAL_ext::Geodesic_statistics s1, s;
+  const std::vector<Vertex> one = sample(1, d1, l1, s1);
+  for(int threads : {2, 4}) {
+    EXPECT_EQ(sample(threads, d, l, s), one) << threads << " threads";
+    EXPECT_EQ(d, d1) << threads << " threads";
+    EXPECT_EQ(l, l1) << threads << " threads";
+    EXPECT_GT(s.batched_runs_kept, 0u) << threads << " threads";
   }
 }
 

@@ -7,6 +7,7 @@
 
 #include <CGAL_ext/farthest_point_sampling.h>
 
+#include <algorithm>
 #include <iterator>
 #include <vector>
 
@@ -167,6 +168,39 @@ TEST(Farthest_point_sampling, thread_counts_first_sample_and_covering_radius)
   const Sampling covered = sample(m, 100, CGAL_ext::parameters::covering_radius(sequential.radii[5]));
   EXPECT_EQ(covered.samples, std::vector<Vertex>(sequential.samples.begin(), sequential.samples.begin() + 6));
   EXPECT_EQ(covered.radii.back(), sequential.radii[5]);
+}
+
+// On two threads or more, several samples' runs go at once, each kept when it provably computes
+// what it would after the ones before it: the samples, radii, distances and labels are still
+// those of one thread, many runs are kept, and a count or a covering radius that ends inside a
+// batch stops at the same sample.
+TEST(Farthest_point_sampling, samples_run_in_batches_change_nothing)
+{
+  const Mesh& m = test_mesh("elephant");
+  const Sampling one = sample<CGAL::Parallel_tag>(m, 200, number_of_threads(1));
+  EXPECT_EQ(one.statistics.batched_runs_kept + one.statistics.batched_runs_undone, 0u);
+  for(int threads : {2, 4}) {
+    const Sampling many = sample<CGAL::Parallel_tag>(m, 200, number_of_threads(threads));
+    EXPECT_EQ(many.samples, one.samples) << threads << " threads";
+    EXPECT_EQ(many.radii, one.radii) << threads << " threads";
+    EXPECT_EQ(many.distances, one.distances) << threads << " threads";
+    EXPECT_EQ(many.labels, one.labels) << threads << " threads";
+    EXPECT_GE(many.statistics.batched_runs_kept, 20u) << threads << " threads";
+    EXPECT_LT(many.statistics.batched_runs_kept, many.samples.size()) << threads << " threads";
+  }
+  for(std::size_t count : {50, 51}) {
+    const Sampling first = sample<CGAL::Parallel_tag>(m, count, number_of_threads(2));
+    EXPECT_EQ(first.samples, std::vector<Vertex>(one.samples.begin(), one.samples.begin() + long(count)));
+    EXPECT_EQ(first.radii, std::vector<double>(one.radii.begin(), one.radii.begin() + long(count)));
+    const Sampling covered =
+      sample<CGAL::Parallel_tag>(m, 200, number_of_threads(2).covering_radius(one.radii[count - 1]));
+    ASSERT_FALSE(covered.radii.empty());
+    EXPECT_LE(covered.radii.back(), one.radii[count - 1]);
+    EXPECT_EQ(covered.samples.size(),
+              std::size_t(std::find_if(one.radii.begin(), one.radii.end(),
+                                       [&](double r) { return r <= one.radii[count - 1]; }) -
+                          one.radii.begin()) + 1);
+  }
 }
 
 // Incremental: each new sample's propagation sweeps only its own cell. Solving every sample over

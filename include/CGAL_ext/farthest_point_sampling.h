@@ -36,8 +36,10 @@ namespace CGAL_ext {
 /// the exact multi-source solve from the samples, to round-off.
 ///
 /// \tparam ConcurrencyTag `CGAL::Sequential_tag` (the default), `CGAL::Parallel_tag` (each
-///         propagation in parallel, PVTP: the same samples for every number of threads) or
-///         `CGAL::Parallel_if_available_tag`
+///         propagation in parallel, PVTP; on two threads or more, two samples' propagations at
+///         once where the second one provably computes what it would compute after the first
+///         (see `Geodesic_statistics::batched_runs_kept`); the same samples for every number of
+///         threads) or `CGAL::Parallel_if_available_tag`
 /// \tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`
 /// \tparam OutputIterator an output iterator accepting `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
 /// \tparam NamedParameters a sequence of named parameters, started from `CGAL_ext::parameters`
@@ -159,12 +161,18 @@ OutputIterator farthest_point_sampling(const TriangleMesh& tm, std::size_t numbe
   auto radius_out = parameters::choose_parameter(get_parameter(np, internal_np::covering_radius_output_iterator),
                                                  CGAL::Emptyset_iterator());
   internal::Farthest_point_sampler<parallel> sampler(cache, settings);
+  const auto enough = [&](std::size_t count, double covering) {
+    return count == number_of_samples || (radius > 0 && mesh.to_mesh_unit(covering) <= radius);
+  };
   for(int next = first;;) {
-    sampler.add_sample(next);
-    *samples++ = mesh.vertex_of(next);
-    const double covering = mesh.to_mesh_unit(sampler.covering_radius());
-    *radius_out++ = covering;
-    if(sampler.samples().size() == number_of_samples || (radius > 0 && covering <= radius))
+    const std::size_t before = sampler.samples().size();
+    sampler.add_samples(next, enough);
+    for(std::size_t i = before; i < sampler.samples().size(); ++i) {
+      *samples++ = mesh.vertex_of(sampler.samples()[i]);
+      *radius_out++ = mesh.to_mesh_unit(sampler.covering_radii()[i]);
+    }
+    const double covering = sampler.covering_radius();
+    if(enough(sampler.samples().size(), covering))
       break;
     if(covering == 0)
       throw Geodesic_error("asked for " + std::to_string(number_of_samples) + " samples, but after " +

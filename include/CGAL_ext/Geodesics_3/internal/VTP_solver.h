@@ -169,6 +169,27 @@ public:
   /// +infinity again when beyond the limit), each once.
   const std::vector<int>& reached_vertices() const { return m_reached; }
 
+  /// Makes the runs from now on note every vertex whose distance they read or write, for a
+  /// caller that runs this solver beside another one from the same field: a run that read no
+  /// vertex the other one changed computes what it would have computed after it.
+  void note_reads()
+  {
+    if(m_read_stamp.empty())
+      m_read_stamp.assign(m_mesh.number_of_vertices, 0);
+  }
+  /// Whether the last run read or wrote the distance of v (`note_reads()` on).
+  bool was_read(int v) const { return m_read_stamp[std::size_t(v)] == m_run; }
+
+  /// Takes the distances and nearest sources of `vertices` from `other`, a solver of the same
+  /// mesh (the field the next run starts from, `keep_field_for_next_run`).
+  void copy_field_from(const VTP_solver& other, const std::vector<int>& vertices)
+  {
+    for(int v : vertices) {
+      m_distance[v] = other.m_distance[v];
+      m_nearest_source[v] = other.m_nearest_source[v];
+    }
+  }
+
   /// Runs the propagation; distances beyond the max distance, or beyond the farthest stop
   /// vertex when stop vertices are given, are +infinity.
   void run()
@@ -179,6 +200,7 @@ public:
     for(const Source_point& s : m_sources) {
       const int index = m_first_source_index + int(&s - m_sources.data());
       if(s.vertex >= 0) {
+        note_read(s.vertex);
         m_emits_when_taken[s.vertex] = 1;
         relax(s.vertex, 0., index);
       } else {
@@ -217,6 +239,7 @@ private:
     m_reached.clear();
     if(++m_run == 0) { // the stamps wrapped around: none may look current
       std::fill(m_stamp.begin(), m_stamp.end(), 0);
+      std::fill(m_read_stamp.begin(), m_read_stamp.end(), 0);
       m_run = 1;
     }
     m_sources.clear();
@@ -254,6 +277,14 @@ private:
       m_mesh.for_each_copy_of_point(v, [&](int u) { set_distance(u, d, source); });
   }
 
+  // Every distance a run reads is of a vertex it sets, or of the faces of the lists it
+  // propagates and around the vertices it emits from, or of a source.
+  void note_read(int v)
+  {
+    if(!m_read_stamp.empty())
+      m_read_stamp[std::size_t(v)] = m_run;
+  }
+
   void note_reached(int v)
   {
     if(m_stamp[v] != m_run) {
@@ -265,6 +296,7 @@ private:
   void set_distance(int v, double d, int source)
   {
     note_reached(v);
+    note_read(v);
     m_distance[v] = d;
     m_nearest_source[v] = source;
     if(!m_is_taken[v] || m_emits_when_taken[v]) {
@@ -383,6 +415,11 @@ private:
     const int source = m_nearest_source[v];
     m_emitted[v] = sigma;
     m_window_limit = limit();
+    if(!m_read_stamp.empty())
+      m_mesh.for_each_outgoing(v, [&](int h) {
+        note_read(m_mesh.target(h));
+        note_read(m_mesh.apex(h));
+      });
     emit_vertex_windows(
       m_mesh, v, sigma, [&](int u, double d) { relax(u, d, source); },
       [&](int g, const Window_geometry& w) { insert_window(g, w, source); });
@@ -524,6 +561,11 @@ private:
     m_list_flags[h] &= std::uint8_t(~in_scheduled_lists);
     task.halfedge = h;
     task.input = m_head[h];
+    if(!m_read_stamp.empty()) {
+      note_read(m_mesh.source(h));
+      note_read(m_mesh.target(h));
+      note_read(m_mesh.apex(h));
+    }
     m_head[h] = Window_pool::nil;
   }
 
@@ -673,6 +715,7 @@ private:
   bool m_started_from_a_field = false;
   std::vector<int> m_reached;        // vertices whose distance this run set, each once
   std::vector<std::uint32_t> m_stamp = std::vector<std::uint32_t>(m_mesh.number_of_vertices, 0); // per vertex: the last run that set its distance
+  std::vector<std::uint32_t> m_read_stamp; // per vertex: the last run that read it (empty: not noted)
   std::uint32_t m_run = 1;
   double m_stop_limit = infinity();
   const double m_reset_step; // lambda h, or 0 for exact propagation
