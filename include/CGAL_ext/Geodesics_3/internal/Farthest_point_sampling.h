@@ -197,9 +197,7 @@ private:
     const std::size_t batch_size = m_twins.size() + 1;
     m_looked_at.clear();
     while(!m_heap.empty() && m_looked_at.size() < max_candidates_looked_at && m_batch.size() < batch_size) {
-      const Candidate top = m_heap.front();
-      std::pop_heap(m_heap.begin(), m_heap.end());
-      m_heap.pop_back();
+      const Candidate top = pop_candidate();
       if(top.distance != d[std::size_t(top.vertex)])
         continue; // stale
       m_looked_at.push_back(top);
@@ -214,13 +212,24 @@ private:
          }))
         m_batch.push_back(top.vertex);
     }
-    for(const Candidate& c : m_looked_at) {
-      m_heap.push_back(c);
-      std::push_heap(m_heap.begin(), m_heap.end());
-    }
+    for(const Candidate& c : m_looked_at)
+      push_candidate(c);
   }
   static constexpr std::size_t max_candidates_looked_at = 64;
   static constexpr std::size_t runs_per_thread = 1;
+
+  void push_candidate(const Candidate& c)
+  {
+    m_heap.push_back(c);
+    std::push_heap(m_heap.begin(), m_heap.end());
+  }
+  Candidate pop_candidate()
+  {
+    std::pop_heap(m_heap.begin(), m_heap.end());
+    const Candidate top = m_heap.back();
+    m_heap.pop_back();
+    return top;
+  }
 
   VTP_solver& solver(std::size_t i) { return i == 0 ? m_solver : *m_twins[i - 1]; }
 
@@ -236,15 +245,11 @@ private:
       std::make_heap(m_heap.begin(), m_heap.end());
     } else {
       for(int u : lowered)
-        if(std::size_t(u) < n) {
-          m_heap.push_back(Candidate{d[std::size_t(u)], u});
-          std::push_heap(m_heap.begin(), m_heap.end());
-        }
+        if(std::size_t(u) < n)
+          push_candidate(Candidate{d[std::size_t(u)], u});
     }
-    while(m_heap.front().distance != d[std::size_t(m_heap.front().vertex)]) {
-      std::pop_heap(m_heap.begin(), m_heap.end());
-      m_heap.pop_back();
-    }
+    while(m_heap.front().distance != d[std::size_t(m_heap.front().vertex)])
+      pop_candidate();
     m_farthest = m_heap.front().vertex;
     m_covering_radii.push_back(covering_radius());
   }
