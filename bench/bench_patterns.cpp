@@ -4,10 +4,13 @@
 //   SEED (default: the tests' own) draws another layout, noise and orientations (not for golf).
 //   MODEL: plane (round bumps), golf (dimples on a sphere), cylinder, elongated, sizes (three sizes)
 // Prints one Markdown table row; with BENCH_PATTERNS_OFFSETS set, also each found centre's offset
-// from its nearest planted centre, over that instance's radius, on stderr.
+// from its nearest planted centre, over that instance's radius, on stderr; with
+// BENCH_PATTERNS_MESH=FILE, also writes the mesh built (to run the tool on it, or to view it).
 #include "support/pattern_meshes.h"
 
 #include <CGAL_ext/detect_repetitive_patterns.h>
+
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
 #include <chrono>
 #include <cmath>
@@ -55,6 +58,11 @@ int main(int argc, char** argv)
     std::cerr << "unknown model " << model << "\n";
     return EXIT_FAILURE;
   }
+  if(const char* file = std::getenv("BENCH_PATTERNS_MESH"))
+    if(!CGAL::IO::write_polygon_mesh(file, scene.mesh, CGAL::parameters::stream_precision(17))) {
+      std::cerr << "cannot write " << file << "\n";
+      return EXIT_FAILURE;
+    }
   const auto patch = scene.patch_radius > 0
                        ? CGAL_ext::Pattern_patch<Mesh>::disk(scene.patch_centre, scene.patch_radius)
                        : CGAL_ext::Pattern_patch<Mesh>::of_vertices(scene.patch_vertices);

@@ -348,6 +348,7 @@ int run_patterns(const Patterns_options& options)
       << "matches=" << st.matches << "\n"
       << "clusters=" << st.clusters << "\n"
       << "searches=" << st.searches << "\n"
+      << "distance_rows=" << st.distance_rows << "\n"
       << "instances=" << found.instances.size() << "\n"
       << "arrangement_edges=" << found.edges.size() << "\n"
       << "seconds_sampling=" << st.sampling_seconds << "\n"

@@ -51,6 +51,7 @@ struct Pattern_statistics
   std::size_t matches = 0;         ///< candidate matches, summed over the searches
   std::size_t clusters = 0;        ///< candidate instances, summed over the searches
   std::size_t searches = 0;        ///< rounds of region growing
+  std::size_t distance_rows = 0;   ///< local distance rows solved (one single-source run each)
   double patch_radius = 0;         ///< the largest distance from the patch's centre to its vertices
 };
 

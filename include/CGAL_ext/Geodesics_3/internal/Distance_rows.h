@@ -27,56 +27,109 @@ typedef std::pair<std::size_t, double> Row_entry;
 /// The memory the rows of a batch may take (`for_each_row`).
 constexpr std::size_t row_budget_bytes = std::size_t(64) << 20;
 
-/// Calls `solve(i, solver)` for every source i, each a sequential VTP run on a solver of the
-/// calling thread (kept and reset between rows: a row costs what it sweeps), in parallel across
-/// sources; then `hand_over(i, solver_result)` in source order, from the calling thread, with
-/// what `solve` made of row i. A batch of rows is solved, then handed over: as many rows as fit
-/// `row_budget_bytes` at the size of the rows made so far, between 4 and 64 per thread (the
-/// threads wait for the batch's last row: the longer the batch, the less they wait).
+/// Single-source VTP solves on one mesh, any number of calls: the mesh cache, the task arena
+/// and one solver per thread are made once and kept (a caller that asks for a few rows at a
+/// time, again and again, pays for them once, and a row costs what it sweeps).
+template <bool parallel, class TriangleMesh, class VertexPointMap>
+class Row_solvers
+{
+public:
+  typedef Mesh_setup<TriangleMesh, VertexPointMap> Setup;
+
+  /// Reads the named parameters as `geodesic_distance_rows()` does (VTP only).
+  template <class NamedParameters>
+  Row_solvers(const TriangleMesh& tm, const NamedParameters& np)
+    : m_settings(read_solver_settings(np, VTP))
+    , m_mesh(tm, np)
+    , m_arena(m_settings.number_of_threads)
+  {
+    if(m_settings.algorithm != VTP)
+      throw Geodesic_error("distance matrices are computed with VTP, got algorithm " +
+                           std::to_string(int(m_settings.algorithm)));
+  }
+
+  const Setup& mesh() const { return m_mesh; }
+  /// The max distance of the named parameters (+infinity without).
+  double max_distance() const { return m_settings.max_distance; }
+
+  /// Runs one solve from each of `points`, within `max_distance` (in the mesh's unit) and, when
+  /// `stop` (cache vertex indices) is not empty, until each of its vertices is settled; in
+  /// parallel across sources. Calls `make_row(solver, mesh, row)` after each run, on the thread
+  /// that ran it, then `hand_over(i, row)` in source order from the calling thread. A batch of
+  /// rows is solved, then handed over: as many rows as fit `row_budget_bytes` at the size of the
+  /// rows made so far, between 4 and 64 per thread (the threads wait for the batch's last row:
+  /// the longer the batch, the less they wait).
+  template <class Row, class MakeRow, class HandOver>
+  void for_each_row(const std::vector<Source_point>& points, double max_distance, const std::vector<int>& stop,
+                    MakeRow make_row, HandOver hand_over)
+  {
+    if(points.empty())
+      throw Geodesic_error("no source was given");
+    m_arena.execute([&] {
+      const std::size_t threads = parallel ? arena_concurrency() : 1;
+      if(m_solvers.size() < threads)
+        m_solvers.resize(threads);
+      std::size_t batch = parallel ? 4 * threads : 1;
+      std::size_t rows_made = 0, bytes_made = 0;
+      std::vector<Row> rows;
+      for(std::size_t first = 0, n = 0; first < points.size(); first += n) {
+        n = std::min(batch, points.size() - first);
+        if(rows.size() < n)
+          rows.resize(n);
+        for_each_index(parallel, n, 1, [&](std::size_t j, std::size_t slot) {
+          std::unique_ptr<VTP_solver>& solver = m_solvers[slot];
+          if(!solver)
+            solver = std::make_unique<VTP_solver>(m_mesh.cache(), m_settings, false);
+          solver->reset();
+          solver->set_max_distance(max_distance);
+          solver->add_source(points[first + j]);
+          for(int v : stop)
+            solver->add_stop_vertex(v);
+          solver->run();
+          make_row(*solver, m_mesh, rows[j]);
+        });
+        for(std::size_t j = 0; j < n; ++j) {
+          bytes_made += rows[j].size() * sizeof(typename Row::value_type);
+          hand_over(first + j, static_cast<const Row&>(rows[j]));
+        }
+        rows_made += n;
+        if(parallel)
+          batch = std::clamp<std::size_t>(row_budget_bytes * rows_made / std::max<std::size_t>(bytes_made, 1),
+                                          4 * threads, 64 * threads);
+      }
+    });
+  }
+
+private:
+  Solver_settings m_settings;
+  Setup m_mesh;
+  Solver_arena<parallel> m_arena;
+  std::vector<std::unique_ptr<VTP_solver>> m_solvers; // by thread slot
+};
+
+/// Calls `make_row(solver, mesh, row)` after a sequential VTP run from each source (see
+/// `Row_solvers::for_each_row`), then `hand_over(i, row)` in source order.
 template <bool parallel, class Row, class TriangleMesh, class Sources, class MakeRow, class HandOver,
           class NamedParameters>
 void for_each_row(const TriangleMesh& tm, const Sources& sources, const NamedParameters& np, MakeRow make_row,
                   HandOver hand_over)
 {
-  typedef Vertex_point_map_of<TriangleMesh, NamedParameters> Vertex_point_map;
-  const Solver_settings settings = read_solver_settings(np, VTP);
-  if(settings.algorithm != VTP)
-    throw Geodesic_error("distance matrices are computed with VTP, got algorithm " +
-                         std::to_string(int(settings.algorithm)));
-  const Mesh_setup<TriangleMesh, Vertex_point_map> mesh(tm, np);
-  const std::vector<Source_point> points = mesh.source_points(sources);
-  if(points.empty())
-    throw Geodesic_error("no source was given");
+  Row_solvers<parallel, TriangleMesh, Vertex_point_map_of<TriangleMesh, NamedParameters>> solvers(tm, np);
+  solvers.template for_each_row<Row>(solvers.mesh().source_points(sources), solvers.max_distance(), {}, make_row,
+                                     hand_over);
+}
 
-  run_in_arena<parallel>(settings.number_of_threads, [&] {
-    const std::size_t threads = parallel ? arena_concurrency() : 1;
-    std::vector<std::unique_ptr<VTP_solver>> solvers(threads);
-    std::size_t batch = parallel ? 4 * threads : 1;
-    std::size_t rows_made = 0, bytes_made = 0;
-    std::vector<Row> rows;
-    for(std::size_t first = 0, n = 0; first < points.size(); first += n) {
-      n = std::min(batch, points.size() - first);
-      if(rows.size() < n)
-        rows.resize(n);
-      for_each_index(parallel, n, 1, [&](std::size_t j, std::size_t slot) {
-        std::unique_ptr<VTP_solver>& solver = solvers[slot];
-        if(!solver)
-          solver = std::make_unique<VTP_solver>(mesh.cache(), settings, false);
-        solver->reset();
-        solver->add_source(points[first + j]);
-        solver->run();
-        make_row(*solver, mesh, rows[j]);
-      });
-      for(std::size_t j = 0; j < n; ++j) {
-        bytes_made += rows[j].size() * sizeof(typename Row::value_type);
-        hand_over(first + j, static_cast<const Row&>(rows[j]));
-      }
-      rows_made += n;
-      if(parallel)
-        batch = std::clamp<std::size_t>(row_budget_bytes * rows_made / std::max<std::size_t>(bytes_made, 1),
-                                        4 * threads, 64 * threads);
-    }
-  });
+/// A sparse row: the vertices the last run of `solver` reached (within its limit), by vertex
+/// index, in order, with their distances in the mesh's unit.
+template <class Setup>
+void make_sparse_row(const VTP_solver& solver, const Setup& mesh, std::vector<Row_entry>& row)
+{
+  const std::vector<double>& d = solver.distances();
+  row.clear();
+  for(int v : solver.reached_vertices())
+    if(std::size_t(v) < mesh.cache().number_of_mesh_vertices && d[std::size_t(v)] < VTP_solver::infinity())
+      row.emplace_back(std::size_t(v), mesh.to_mesh_unit(d[std::size_t(v)]));
+  std::sort(row.begin(), row.end());
 }
 
 /// Dense rows: the distance of every vertex of the mesh, by vertex index.
@@ -102,14 +155,7 @@ void sparse_distance_rows(const TriangleMesh& tm, const Sources& sources, RowFun
 {
   for_each_row<parallel, std::vector<Row_entry>>(
     tm, sources, np,
-    [](const VTP_solver& solver, const auto& mesh, std::vector<Row_entry>& r) {
-      const std::vector<double>& d = solver.distances();
-      r.clear();
-      for(int v : solver.reached_vertices())
-        if(std::size_t(v) < mesh.cache().number_of_mesh_vertices && d[std::size_t(v)] < VTP_solver::infinity())
-          r.emplace_back(std::size_t(v), mesh.to_mesh_unit(d[std::size_t(v)]));
-      std::sort(r.begin(), r.end());
-    },
+    [](const VTP_solver& solver, const auto& mesh, std::vector<Row_entry>& r) { make_sparse_row(solver, mesh, r); },
     row);
 }
 

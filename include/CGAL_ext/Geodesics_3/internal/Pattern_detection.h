@@ -15,6 +15,7 @@
 
 #include <CGAL_ext/Geodesics_3/Geodesic_error.h>
 #include <CGAL_ext/Geodesics_3/Geodesic_statistics.h>
+#include <CGAL_ext/Geodesics_3/internal/Distance_rows.h>
 #include <CGAL_ext/Geodesics_3/internal/Pattern_curvature.h>
 #include <CGAL_ext/Geodesics_3/internal/Pattern_refinement.h>
 #include <CGAL_ext/Geodesics_3/internal/Pattern_signatures.h>
@@ -33,6 +34,7 @@
 #include <functional>
 #include <limits>
 #include <numeric>
+#include <optional>
 #include <queue>
 #include <string>
 #include <utility>
@@ -118,6 +120,8 @@ public:
     Detection_result result;
     m_times = &result.statistics;
     auto start = Clock::now();
+    m_rows.emplace(m_tm, CGAL_ext::parameters::vertex_point_map(m_vpm).vertex_index_map(m_vim).number_of_threads(
+                           m_settings.threads));
     set_patch(patch);
     report(Step::sampling, 0);
     sample();
@@ -170,11 +174,6 @@ private:
     return std::chrono::duration<double>(Clock::now() - start).count();
   }
 
-  auto solver_parameters(double max_distance) const
-  {
-    return CGAL_ext::parameters::vertex_point_map(m_vpm).vertex_index_map(m_vim).number_of_threads(
-      m_settings.threads).max_distance(max_distance);
-  }
   typedef std::conditional_t<parallel, CGAL::Parallel_tag, CGAL::Sequential_tag> Concurrency;
 
   void check_settings() const
@@ -207,13 +206,40 @@ private:
       throw Geodesic_error("pattern detection: number_of_threads must not be negative");
   }
 
+  // Local distance rows from `sources` (vertex indices), within `radius` and, when `stop` (vertex
+  // indices) is not empty, until each of its vertices is settled: `hand_over(i, row)` in order.
+  template <class HandOver>
+  void rows(const std::vector<std::size_t>& sources, double radius, const HandOver& hand_over,
+            const std::vector<int>& stop = {})
+  {
+    std::vector<Source_point> points;
+    for(std::size_t v : sources)
+      points.push_back(m_rows->mesh().source_point(m_vertex[v]));
+    m_rows->template for_each_row<Row>(
+      points, radius, stop,
+      [](const VTP_solver& solver, const auto& mesh, Row& row) { make_sparse_row(solver, mesh, row); }, hand_over);
+    m_times->distance_rows += sources.size();
+  }
+
   // One local distance row from `source`, within `radius`.
-  Row local_row(std::size_t source, double radius) const
+  Row local_row(std::size_t source, double radius)
   {
     Row row;
-    const std::vector<vertex_descriptor> sources{m_vertex[source]};
-    geodesic_sparse_distance_rows<Concurrency>(
-      m_tm, sources, [&](std::size_t, const Row& entries) { row = entries; }, solver_parameters(radius));
+    rows({source}, radius, [&](std::size_t, const Row& entries) { row = entries; });
+    return row;
+  }
+
+  // The distances from `source` to the patch's vertices (the row stops once they are settled).
+  Row patch_row(std::size_t source)
+  {
+    Row row;
+    rows({source}, std::numeric_limits<double>::infinity(),
+         [&](std::size_t, const Row& entries) {
+           for(const auto& entry : entries)
+             if(m_in_patch[entry.first])
+               row.push_back(entry);
+         },
+         m_patch_stop);
     return row;
   }
 
@@ -264,12 +290,10 @@ private:
                                " is out of range (the mesh has " + std::to_string(n) + " vertices)");
         m_in_patch[v] = true;
       }
+      set_patch_vertices();
       set_patch_of_vertices(patch.vertices);
     }
-    m_patch_vertices.clear();
-    for(std::size_t v = 0; v < n; ++v)
-      if(m_in_patch[v])
-        m_patch_vertices.push_back(v);
+    set_patch_vertices();
     m_times->patch_radius = m_radius;
     // the size of the patch: the radius of a disk of its area (its radius when it is a disk,
     // less when it is elongated, whose samples and signatures follow its width)
@@ -281,6 +305,17 @@ private:
     m_size = std::min(m_radius, std::sqrt(patch_area / CGAL_PI));
     if(!(m_size > 0))
       throw Geodesic_error("pattern detection: the patch has no area");
+  }
+
+  void set_patch_vertices()
+  {
+    m_patch_vertices.clear();
+    m_patch_stop.clear();
+    for(std::size_t v = 0; v < m_vertex.size(); ++v)
+      if(m_in_patch[v]) {
+        m_patch_vertices.push_back(v);
+        m_patch_stop.push_back(int(v));
+      }
   }
 
   // A vertex list: connected, with a border; its centre is the vertex farthest from its border
@@ -310,9 +345,7 @@ private:
       if(on_border)
         border.push_back(m_vertex[v]);
     }
-    std::size_t distinct = 0;
-    for(std::size_t v = 0; v < m_vertex.size(); ++v)
-      distinct += m_in_patch[v];
+    const std::size_t distinct = m_patch_vertices.size();
     if(reached != distinct)
       throw Geodesic_error("pattern detection: the patch vertices are not connected (" + std::to_string(reached) +
                            " of " + std::to_string(distinct) + " reached from vertex " +
@@ -320,21 +353,16 @@ private:
     if(border.size() == distinct && distinct < 3)
       throw Geodesic_error("pattern detection: the patch has fewer than 3 vertices");
     std::vector<double> from_border(m_vertex.size(), 0.0);
+    std::vector<vertex_descriptor> patch_vertices;
+    for(std::size_t v : m_patch_vertices)
+      patch_vertices.push_back(m_vertex[v]);
     geodesic_distances<Concurrency>(m_tm, CGAL::make_property_map(from_border), border,
-                                    CGAL_ext::parameters::vertex_point_map(m_vpm).vertex_index_map(m_vim));
+                                    CGAL_ext::parameters::vertex_point_map(m_vpm).vertex_index_map(m_vim)
+                                      .number_of_threads(m_settings.threads).stop_vertices(patch_vertices));
     std::size_t deepest = list.front();
     for(std::size_t v = 0; v < m_vertex.size(); ++v)
       if(m_in_patch[v] && from_border[v] > from_border[deepest])
         deepest = v;
-    // a bound on how far the patch reaches: the sum of its edges' lengths
-    double bound = 0;
-    for(auto e : edges(m_tm)) {
-      const std::size_t a = std::size_t(get(m_vim, source(halfedge(e, m_tm), m_tm)));
-      const std::size_t b = std::size_t(get(m_vim, target(halfedge(e, m_tm), m_tm)));
-      if(m_in_patch[a] && m_in_patch[b])
-        bound += std::sqrt(double(CGAL::squared_distance(get(m_vpm, m_vertex[a]), get(m_vpm, m_vertex[b]))));
-    }
-    bound *= 1 + 1e-9;
     // The centre is the midpoint of the medial axis: the distance from the border is nearly flat
     // along the axis of an elongated patch, so its largest value alone may sit anywhere near
     // the middle. Among the vertices almost as deep as the deepest (the axis), the centre is the
@@ -350,10 +378,10 @@ private:
         }
       return far;
     };
-    const std::size_t end_a = farthest_in_patch(local_row(deepest, bound));
-    const Row row_a = local_row(end_a, bound);
+    const std::size_t end_a = farthest_in_patch(patch_row(deepest));
+    const Row row_a = patch_row(end_a);
     const std::size_t end_b = farthest_in_patch(row_a);
-    const Row row_b = local_row(end_b, bound);
+    const Row row_b = patch_row(end_b);
     std::vector<double> from_ends(m_vertex.size(), 0.0);
     for(const Row* row : {&row_a, &row_b})
       for(const auto& [v, d] : *row)
@@ -362,26 +390,25 @@ private:
     for(std::size_t v = 0; v < m_vertex.size(); ++v)
       if(m_in_patch[v] && from_border[v] >= 0.8 * from_border[deepest] && from_ends[v] < from_ends[m_center])
         m_center = v;
-    m_center = patch_centroid(m_center, row_a);
+    m_center = patch_centroid(m_center);
     m_radius = 0;
-    for(const auto& [v, d] : local_row(m_center, bound))
-      if(m_in_patch[v])
-        m_radius = std::max(m_radius, d);
+    for(const auto& [v, d] : patch_row(m_center))
+      m_radius = std::max(m_radius, d);
     if(!(m_radius > 0))
       throw Geodesic_error("pattern detection: the patch has no extent (all its vertices are at one point)");
   }
 
   // A descent over vertices for several walkers at once (the patch's centroid, the instances'
   // centres). Walker w starts at start[w]; every step evaluates the vertices tried, one local
-  // row of the largest `radius(vertex)` among them each, in one batch: first the starts, then
-  // the unvisited neighbours of each moving walker's best vertex that `may_visit(w, vertex)`
-  // lets in. `cost(w, vertex, row)` is a vertex's cost; a walker stops when none of its vertices
-  // tried costs less than its best, and all stop after `max_steps`. Returns each walker's best
-  // vertex and its cost.
-  template <class Radius, class Cost, class MayVisit>
-  std::vector<std::pair<std::size_t, double>> descend(const std::vector<std::size_t>& start, const Radius& radius,
-                                                      const Cost& cost, const MayVisit& may_visit,
-                                                      int max_steps) const
+  // row each (within `radius`, and until the vertices of `stop` are settled), in one batch:
+  // first the starts, then the unvisited neighbours of each moving walker's best vertex that
+  // `may_visit(w, vertex)` lets in. `cost(w, vertex, row)` is a vertex's cost; a walker stops
+  // when none of its vertices tried costs less than its best, and all stop after `max_steps`.
+  // Returns each walker's best vertex and its cost.
+  template <class Cost, class MayVisit>
+  std::vector<std::pair<std::size_t, double>> descend(const std::vector<std::size_t>& start, double radius,
+                                                      const std::vector<int>& stop, const Cost& cost,
+                                                      const MayVisit& may_visit, int max_steps)
   {
     const std::size_t n = start.size();
     std::vector<std::pair<std::size_t, double>> best(n);
@@ -393,15 +420,12 @@ private:
       tried.emplace_back(w, start[w]);
     }
     for(int step = 0; step < max_steps && !tried.empty(); ++step) {
-      std::vector<vertex_descriptor> sources;
-      double row_radius = 0;
-      for(const auto& t : tried) {
-        sources.push_back(m_vertex[t.second]);
-        row_radius = std::max(row_radius, radius(t.second));
-      }
+      std::vector<std::size_t> sources;
+      for(const auto& t : tried)
+        sources.push_back(t.second);
       std::vector<bool> moved(n, false);
-      geodesic_sparse_distance_rows<Concurrency>(
-        m_tm, sources,
+      rows(
+        sources, radius,
         [&](std::size_t r, const Row& entries) {
           const auto [w, v] = tried[r];
           const double c = cost(w, v, entries);
@@ -410,7 +434,7 @@ private:
             moved[w] = true;
           }
         },
-        solver_parameters(row_radius));
+        stop);
       tried.clear();
       for(std::size_t w = 0; w < n; ++w) {
         if(!moved[w])
@@ -431,19 +455,11 @@ private:
   // The patch's geodesic centroid among its vertices: the one whose area-weighted mean squared
   // distance to the patch's vertices is least (the centre of a symmetric patch whatever its
   // shape, and it weighs every vertex, so that a border's jagged edge moves it little), by
-  // descent from `start`. Every patch vertex is within d(v, e) + (the farthest patch vertex
-  // from e) of v, `row_end` being the distances from a patch vertex e.
-  std::size_t patch_centroid(std::size_t start, const Row& row_end) const
+  // descent from `start`, with rows that stop once the patch's vertices are settled.
+  std::size_t patch_centroid(std::size_t start)
   {
-    std::vector<double> from_end(m_vertex.size(), std::numeric_limits<double>::infinity());
-    double reach = 0;
-    for(const auto& [v, d] : row_end)
-      if(m_in_patch[v]) {
-        from_end[v] = d;
-        reach = std::max(reach, d);
-      }
     return descend(
-             {start}, [&](std::size_t v) { return (from_end[v] + reach) * (1 + 1e-9); },
+             {start}, std::numeric_limits<double>::infinity(), m_patch_stop,
              [&](std::size_t, std::size_t, const Row& entries) {
                double c = 0;
                for(const auto& [v, d] : entries)
@@ -567,11 +583,8 @@ private:
     const std::size_t n = m_sample_vertex.size();
     m_rings.assign(n, Ring_sums(bands, band));
     m_near.assign(n, Row());
-    std::vector<vertex_descriptor> sources;
-    for(std::size_t v : m_sample_vertex)
-      sources.push_back(m_vertex[v]);
-    geodesic_sparse_distance_rows<Concurrency>(
-      m_tm, sources,
+    rows(
+      m_sample_vertex, row_radius,
       [&](std::size_t s, const Row& entries) {
         for(const auto& [v, d] : entries) {
           if(d < largest)
@@ -582,8 +595,7 @@ private:
         }
         std::sort(m_near[s].begin(), m_near[s].end());
         report(Step::signatures, double(s + 1) / double(n));
-      },
-      solver_parameters(row_radius));
+      });
 
     const int rings = m_settings.signature_rings;
     m_signature.assign(m_scales.size(), std::vector<std::vector<double>>(n));
@@ -625,19 +637,16 @@ private:
     const std::size_t k = m_patch_sample.size();
     m_patch_distance.assign(k * k, std::numeric_limits<double>::infinity());
     std::vector<std::size_t> index(m_sample_vertex.size(), none);
-    std::vector<vertex_descriptor> sources;
+    std::vector<std::size_t> sources;
     for(std::size_t i = 0; i < k; ++i) {
       index[m_patch_sample[i]] = i;
-      sources.push_back(m_vertex[m_sample_vertex[m_patch_sample[i]]]);
+      sources.push_back(m_sample_vertex[m_patch_sample[i]]);
     }
-    geodesic_sparse_distance_rows<Concurrency>(
-      m_tm, sources,
-      [&](std::size_t i, const Row& entries) {
-        for(const auto& [v, d] : entries)
-          if(m_sample_of_vertex[v] != none && index[m_sample_of_vertex[v]] != none)
-            m_patch_distance[i * k + index[m_sample_of_vertex[v]]] = d;
-      },
-      solver_parameters(2.01 * m_radius));
+    rows(sources, 2.01 * m_radius, [&](std::size_t i, const Row& entries) {
+      for(const auto& [v, d] : entries)
+        if(m_sample_of_vertex[v] != none && index[m_sample_of_vertex[v]] != none)
+          m_patch_distance[i * k + index[m_sample_of_vertex[v]]] = d;
+    });
   }
 
   double signature_cost(std::size_t i, std::size_t scale_step, std::size_t q) const
@@ -1029,7 +1038,7 @@ private:
       start.push_back(m_instances[a].center_vertex);
     const int max_steps = 2 + int(std::ceil(3 * m_spacing * m_scales.back() / std::max(m_mean_edge, 1e-300)));
     const auto placed = descend(
-      start, [&](std::size_t) { return reach; },
+      start, reach, {},
       [&](std::size_t w, std::size_t, const Row& entries) { return cost(w + 1, entries); },
       [&](std::size_t w, std::size_t v) { return is_allowed(w + 1, v); }, max_steps);
     for(std::size_t a = 1; a < n; ++a) {
@@ -1049,29 +1058,26 @@ private:
       return;
     const auto size = [&](std::size_t a) { return m_size * m_scales[m_instances[a].scale_step]; };
     double largest = 0;
-    std::vector<vertex_descriptor> sources;
+    std::vector<std::size_t> sources;
     for(std::size_t a = 0; a < n; ++a) {
       largest = std::max(largest, size(a));
-      sources.push_back(m_vertex[m_instances[a].center_vertex]);
+      sources.push_back(m_instances[a].center_vertex);
     }
     std::vector<std::size_t> instance_at(m_vertex.size(), none);
     for(std::size_t a = 0; a < n; ++a)
       instance_at[m_instances[a].center_vertex] = a;
     const auto cost = [&](std::size_t a) { return a == 0 ? -1.0 : m_instances[a].center_cost; };
     std::vector<bool> dropped(n, false);
-    geodesic_sparse_distance_rows<Concurrency>(
-      m_tm, sources,
-      [&](std::size_t a, const Row& entries) {
-        for(const auto& [v, d] : entries) {
-          const std::size_t b = instance_at[v];
-          if(b == none || b == a || d >= 0.5 * (size(a) + size(b)))
-            continue;
-          // rows come in order: a decision for a pair is taken once, at the first of the two
-          if(b > a && !dropped[a] && !dropped[b])
-            dropped[cost(a) <= cost(b) ? b : a] = true;
-        }
-      },
-      solver_parameters(largest));
+    rows(sources, largest, [&](std::size_t a, const Row& entries) {
+      for(const auto& [v, d] : entries) {
+        const std::size_t b = instance_at[v];
+        if(b == none || b == a || d >= 0.5 * (size(a) + size(b)))
+          continue;
+        // rows come in order: a decision for a pair is taken once, at the first of the two
+        if(b > a && !dropped[a] && !dropped[b])
+          dropped[cost(a) <= cost(b) ? b : a] = true;
+      }
+    });
     std::size_t kept = 0;
     for(std::size_t a = 0; a < n; ++a)
       if(!dropped[a]) {
@@ -1141,7 +1147,9 @@ private:
   double m_reported = 0;
   std::vector<vertex_descriptor> m_vertex;
 
+  std::optional<Row_solvers<parallel, TriangleMesh, VertexPointMap>> m_rows; // every local row's
   std::vector<bool> m_in_patch;
+  std::vector<int> m_patch_stop; // the patch's vertices, where rows that must reach them all stop
   std::vector<std::size_t> m_patch_vertices;
   std::size_t m_center = 0;
   double m_radius = 0; // the largest distance from the centre to a patch vertex
