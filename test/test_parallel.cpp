@@ -774,6 +774,52 @@ TEST(Distance_matrix, sparse_rows_are_the_entries_within_the_radius)
   }
 }
 
+// The solvers kept across calls (what the pattern detection asks its rows of): each call with its
+// own max distance or stop vertices gives the rows of fresh solves, after rows of other limits.
+TEST(Distance_matrix, row_solvers_give_fresh_rows_call_after_call)
+{
+  namespace internal = CGAL_ext::Geodesics_3::internal;
+  const Mesh& m = test_mesh("elephant");
+  const double diagonal = bbox_diagonal(m);
+  const std::vector<Vertex> sources = spread_vertices(m, 6);
+  const std::vector<Vertex> stop = {Vertex(17), Vertex(400), Vertex(1200)};
+  typedef std::vector<std::pair<std::size_t, double>> Row;
+  const auto row_of = [](const std::vector<double>& d) {
+    Row row;
+    for(std::size_t v = 0; v < d.size(); ++v)
+      if(d[v] < inf)
+        row.emplace_back(v, d[v]);
+    return row;
+  };
+  for(int threads : {1, 2, 4}) {
+    const auto np = number_of_threads(threads);
+    internal::Row_solvers<true, Mesh, internal::Vertex_point_map_of<Mesh, std::decay_t<decltype(np)>>> solvers(m, np);
+    std::vector<internal::Source_point> points;
+    for(Vertex s : sources)
+      points.push_back(solvers.mesh().source_point(s));
+    std::vector<int> stop_indices;
+    for(Vertex v : stop)
+      stop_indices.push_back(int(v));
+    for(double radius : {0.1 * diagonal, 0.03 * diagonal, inf, 0.2 * diagonal}) {
+      const bool stops = radius == inf;
+      std::size_t next = 0;
+      solvers.for_each_row<Row>(
+        points, radius, stops ? stop_indices : std::vector<int>{},
+        [](const internal::VTP_solver& solver, const auto& mesh, Row& row) { internal::make_sparse_row(solver, mesh, row); },
+        [&](std::size_t i, const Row& row) {
+          ASSERT_EQ(i, next++);
+          const std::vector<double> fresh = stops ? solve(m, sources[i], CGAL_ext::parameters::stop_vertices(stop))
+                                                  : solve(m, sources[i], CGAL_ext::parameters::max_distance(radius));
+          EXPECT_EQ(row, row_of(fresh)) << threads << " threads, radius " << radius << ", row " << i;
+          if(stops)
+            for(Vertex v : stop)
+              EXPECT_LT(fresh[std::size_t(v)], inf) << "a stop vertex is in its row";
+        });
+      EXPECT_EQ(next, sources.size());
+    }
+  }
+}
+
 TEST(Distance_matrix, face_point_sources_and_errors)
 {
   const Mesh& m = test_mesh("elephant");

@@ -6,6 +6,7 @@
 #include "support/pattern_meshes.h"
 
 #include <CGAL_ext/detect_repetitive_patterns.h>
+#include <CGAL_ext/geodesic_distance_matrix.h>
 
 #include <gtest/gtest.h>
 

@@ -29,7 +29,8 @@ constexpr std::size_t row_budget_bytes = std::size_t(64) << 20;
 
 /// Single-source VTP solves on one mesh, any number of calls: the mesh cache, the task arena
 /// and one solver per thread are made once and kept (a caller that asks for a few rows at a
-/// time, again and again, pays for them once, and a row costs what it sweeps).
+/// time, again and again, pays for them once, and a row costs what it sweeps). One call at a
+/// time: the calls share the solvers.
 template <bool parallel, class TriangleMesh, class VertexPointMap>
 class Row_solvers
 {
@@ -39,18 +40,15 @@ public:
   /// Reads the named parameters as `geodesic_distance_rows()` does (VTP only).
   template <class NamedParameters>
   Row_solvers(const TriangleMesh& tm, const NamedParameters& np)
-    : m_settings(read_solver_settings(np, VTP))
+    : m_settings(vtp_settings(np))
     , m_mesh(tm, np)
     , m_arena(m_settings.number_of_threads)
   {
-    if(m_settings.algorithm != VTP)
-      throw Geodesic_error("distance matrices are computed with VTP, got algorithm " +
-                           std::to_string(int(m_settings.algorithm)));
   }
 
   const Setup& mesh() const { return m_mesh; }
-  /// The max distance of the named parameters (+infinity without).
-  double max_distance() const { return m_settings.max_distance; }
+  /// The max distance of the named parameters (+infinity without), in the mesh's unit.
+  double max_distance_asked() const { return m_settings.max_distance; }
 
   /// Runs one solve from each of `points`, within `max_distance` (in the mesh's unit) and, when
   /// `stop` (cache vertex indices) is not empty, until each of its vertices is settled; in
@@ -80,13 +78,18 @@ public:
           std::unique_ptr<VTP_solver>& solver = m_solvers[slot];
           if(!solver)
             solver = std::make_unique<VTP_solver>(m_mesh.cache(), m_settings, false);
-          solver->reset();
-          solver->set_max_distance(max_distance);
-          solver->add_source(points[first + j]);
-          for(int v : stop)
-            solver->add_stop_vertex(v);
-          solver->run();
-          make_row(*solver, m_mesh, rows[j]);
+          try {
+            solver->reset();
+            solver->set_max_distance_in_mesh_unit(max_distance);
+            solver->add_source(points[first + j]);
+            for(int v : stop)
+              solver->add_stop_vertex(v);
+            solver->run();
+            make_row(*solver, m_mesh, rows[j]);
+          } catch(...) {
+            solver = nullptr; // a run cut short leaves windows that `reset()` does not clear
+            throw;
+          }
         });
         for(std::size_t j = 0; j < n; ++j) {
           bytes_made += rows[j].size() * sizeof(typename Row::value_type);
@@ -101,6 +104,16 @@ public:
   }
 
 private:
+  template <class NamedParameters>
+  static Solver_settings vtp_settings(const NamedParameters& np)
+  {
+    const Solver_settings settings = read_solver_settings(np, VTP);
+    if(settings.algorithm != VTP)
+      throw Geodesic_error("distance matrices are computed with VTP, got algorithm " +
+                           std::to_string(int(settings.algorithm)));
+    return settings;
+  }
+
   Solver_settings m_settings;
   Setup m_mesh;
   Solver_arena<parallel> m_arena;
@@ -115,7 +128,7 @@ void for_each_row(const TriangleMesh& tm, const Sources& sources, const NamedPar
                   HandOver hand_over)
 {
   Row_solvers<parallel, TriangleMesh, Vertex_point_map_of<TriangleMesh, NamedParameters>> solvers(tm, np);
-  solvers.template for_each_row<Row>(solvers.mesh().source_points(sources), solvers.max_distance(), {}, make_row,
+  solvers.template for_each_row<Row>(solvers.mesh().source_points(sources), solvers.max_distance_asked(), {}, make_row,
                                      hand_over);
 }
 

@@ -20,7 +20,6 @@
 #include <CGAL_ext/Geodesics_3/internal/Pattern_refinement.h>
 #include <CGAL_ext/Geodesics_3/internal/Pattern_signatures.h>
 #include <CGAL_ext/farthest_point_sampling.h>
-#include <CGAL_ext/geodesic_distance_matrix.h>
 #include <CGAL_ext/geodesic_distances.h>
 #include <CGAL_ext/geodesic_voronoi_diagram.h>
 
@@ -120,8 +119,6 @@ public:
     Detection_result result;
     m_times = &result.statistics;
     auto start = Clock::now();
-    m_rows.emplace(m_tm, CGAL_ext::parameters::vertex_point_map(m_vpm).vertex_index_map(m_vim).number_of_threads(
-                           m_settings.threads));
     set_patch(patch);
     report(Step::sampling, 0);
     sample();
@@ -134,6 +131,7 @@ public:
     start = Clock::now();
     place_centres();
     merge_overlapping_instances();
+    m_row_solvers.reset(); // the last row: their cache and solvers go before the arrangement's
     m_times->optimization_seconds += seconds_since(start);
     report(Step::arrangement, 0);
     start = Clock::now();
@@ -176,6 +174,13 @@ private:
 
   typedef std::conditional_t<parallel, CGAL::Parallel_tag, CGAL::Sequential_tag> Concurrency;
 
+  // The named parameters of every geodesic call of the pipeline.
+  auto solver_parameters() const
+  {
+    return CGAL_ext::parameters::vertex_point_map(m_vpm).vertex_index_map(m_vim).number_of_threads(
+      m_settings.threads);
+  }
+
   void check_settings() const
   {
     const Pattern_settings& s = m_settings;
@@ -209,13 +214,15 @@ private:
   // Local distance rows from `sources` (vertex indices), within `radius` and, when `stop` (vertex
   // indices) is not empty, until each of its vertices is settled: `hand_over(i, row)` in order.
   template <class HandOver>
-  void rows(const std::vector<std::size_t>& sources, double radius, const HandOver& hand_over,
-            const std::vector<int>& stop = {})
+  void for_each_local_row(const std::vector<std::size_t>& sources, double radius, const HandOver& hand_over,
+                          const std::vector<int>& stop = {})
   {
+    if(!m_row_solvers)
+      m_row_solvers.emplace(m_tm, solver_parameters());
     std::vector<Source_point> points;
     for(std::size_t v : sources)
-      points.push_back(m_rows->mesh().source_point(m_vertex[v]));
-    m_rows->template for_each_row<Row>(
+      points.push_back(m_row_solvers->mesh().source_point(m_vertex[v]));
+    m_row_solvers->template for_each_row<Row>(
       points, radius, stop,
       [](const VTP_solver& solver, const auto& mesh, Row& row) { make_sparse_row(solver, mesh, row); }, hand_over);
     m_times->distance_rows += sources.size();
@@ -225,7 +232,7 @@ private:
   Row local_row(std::size_t source, double radius)
   {
     Row row;
-    rows({source}, radius, [&](std::size_t, const Row& entries) { row = entries; });
+    for_each_local_row({source}, radius, [&](std::size_t, const Row& entries) { row = entries; });
     return row;
   }
 
@@ -233,13 +240,14 @@ private:
   Row patch_row(std::size_t source)
   {
     Row row;
-    rows({source}, std::numeric_limits<double>::infinity(),
-         [&](std::size_t, const Row& entries) {
-           for(const auto& entry : entries)
-             if(m_in_patch[entry.first])
-               row.push_back(entry);
-         },
-         m_patch_stop);
+    for_each_local_row(
+      {source}, std::numeric_limits<double>::infinity(),
+      [&](std::size_t, const Row& entries) {
+        for(const auto& entry : entries)
+          if(m_in_patch[entry.first])
+            row.push_back(entry);
+      },
+      m_patch_stop);
     return row;
   }
 
@@ -283,6 +291,7 @@ private:
                              " is larger than the mesh around the centre (every vertex there is within " +
                              std::to_string(farthest) + ")");
       m_radius = patch.radius;
+      set_patch_vertices();
     } else {
       for(std::size_t v : patch.vertices) {
         if(v >= n)
@@ -293,7 +302,6 @@ private:
       set_patch_vertices();
       set_patch_of_vertices(patch.vertices);
     }
-    set_patch_vertices();
     m_times->patch_radius = m_radius;
     // the size of the patch: the radius of a disk of its area (its radius when it is a disk,
     // less when it is elongated, whose samples and signatures follow its width)
@@ -357,8 +365,7 @@ private:
     for(std::size_t v : m_patch_vertices)
       patch_vertices.push_back(m_vertex[v]);
     geodesic_distances<Concurrency>(m_tm, CGAL::make_property_map(from_border), border,
-                                    CGAL_ext::parameters::vertex_point_map(m_vpm).vertex_index_map(m_vim)
-                                      .number_of_threads(m_settings.threads).stop_vertices(patch_vertices));
+                                    solver_parameters().stop_vertices(patch_vertices));
     std::size_t deepest = list.front();
     for(std::size_t v = 0; v < m_vertex.size(); ++v)
       if(m_in_patch[v] && from_border[v] > from_border[deepest])
@@ -424,7 +431,7 @@ private:
       for(const auto& t : tried)
         sources.push_back(t.second);
       std::vector<bool> moved(n, false);
-      rows(
+      for_each_local_row(
         sources, radius,
         [&](std::size_t r, const Row& entries) {
           const auto [w, v] = tried[r];
@@ -506,8 +513,7 @@ private:
     std::vector<double> distance(m_vertex.size(), 0.0);
     std::vector<std::size_t> nearest(m_vertex.size(), none);
     geodesic_distances<Concurrency>(m_tm, CGAL::make_property_map(distance), sources,
-                                    CGAL_ext::parameters::vertex_point_map(m_vpm).vertex_index_map(m_vim)
-                                      .vertex_source_map(CGAL::make_property_map(nearest)));
+                                    solver_parameters().vertex_source_map(CGAL::make_property_map(nearest)));
     m_stroke_scale.assign(m_sample_vertex.size(), 1.0);
     for(std::size_t q = 0; q < m_sample_vertex.size(); ++q) {
       const std::size_t k = nearest[m_sample_vertex[q]];
@@ -529,7 +535,7 @@ private:
         samples.push_back(v);
         report(Step::sampling, double(samples.size()) / expected);
       }),
-      CGAL_ext::parameters::vertex_point_map(m_vpm).vertex_index_map(m_vim).number_of_threads(m_settings.threads)
+      solver_parameters()
         .first_sample(m_vertex[m_center]).covering_radius(m_spacing).vertex_source_map(CGAL::make_property_map(m_cell)));
     m_sample_vertex.clear();
     m_sample_of_vertex.assign(m_vertex.size(), none);
@@ -583,7 +589,7 @@ private:
     const std::size_t n = m_sample_vertex.size();
     m_rings.assign(n, Ring_sums(bands, band));
     m_near.assign(n, Row());
-    rows(
+    for_each_local_row(
       m_sample_vertex, row_radius,
       [&](std::size_t s, const Row& entries) {
         for(const auto& [v, d] : entries) {
@@ -642,7 +648,7 @@ private:
       index[m_patch_sample[i]] = i;
       sources.push_back(m_sample_vertex[m_patch_sample[i]]);
     }
-    rows(sources, 2.01 * m_radius, [&](std::size_t i, const Row& entries) {
+    for_each_local_row(sources, 2.01 * m_radius, [&](std::size_t i, const Row& entries) {
       for(const auto& [v, d] : entries)
         if(m_sample_of_vertex[v] != none && index[m_sample_of_vertex[v]] != none)
           m_patch_distance[i * k + index[m_sample_of_vertex[v]]] = d;
@@ -1068,7 +1074,7 @@ private:
       instance_at[m_instances[a].center_vertex] = a;
     const auto cost = [&](std::size_t a) { return a == 0 ? -1.0 : m_instances[a].center_cost; };
     std::vector<bool> dropped(n, false);
-    rows(sources, largest, [&](std::size_t a, const Row& entries) {
+    for_each_local_row(sources, largest, [&](std::size_t a, const Row& entries) {
       for(const auto& [v, d] : entries) {
         const std::size_t b = instance_at[v];
         if(b == none || b == a || d >= 0.5 * (size(a) + size(b)))
@@ -1118,9 +1124,7 @@ private:
     std::vector<vertex_descriptor> centres;
     for(const Detected_instance& d : result.instances)
       centres.push_back(m_vertex[d.center]);
-    const auto diagram = geodesic_voronoi_diagram<Concurrency>(
-      m_tm, centres, CGAL_ext::parameters::vertex_point_map(m_vpm).vertex_index_map(m_vim).number_of_threads(
-                       m_settings.threads));
+    const auto diagram = geodesic_voronoi_diagram<Concurrency>(m_tm, centres, solver_parameters());
     result.arrangement_edges = diagram.dual_edges;
     result.arrangement_triangles = diagram.dual_triangles;
     std::vector<std::size_t> owner(m_sample_vertex.size(), none);
@@ -1147,7 +1151,8 @@ private:
   double m_reported = 0;
   std::vector<vertex_descriptor> m_vertex;
 
-  std::optional<Row_solvers<parallel, TriangleMesh, VertexPointMap>> m_rows; // every local row's
+  // the solvers of every local row (made at the first row, released after the last)
+  std::optional<Row_solvers<parallel, TriangleMesh, VertexPointMap>> m_row_solvers;
   std::vector<bool> m_in_patch;
   std::vector<int> m_patch_stop; // the patch's vertices, where rows that must reach them all stop
   std::vector<std::size_t> m_patch_vertices;

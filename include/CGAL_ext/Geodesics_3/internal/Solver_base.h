@@ -39,13 +39,6 @@ public:
   const std::vector<int>& nearest_sources() const { return m_nearest_source; }
   /// In the cache's unit.
   double max_distance() const { return m_max_distance; }
-  /// Sets the max distance of the runs from now on, in the mesh's unit (as
-  /// `Solver_settings::max_distance`); between runs only.
-  void set_max_distance(double max_distance)
-  {
-    m_max_distance = max_distance / m_mesh.unit;
-    m_window_limit = m_max_distance;
-  }
   const Geodesic_statistics& statistics() const { return m_statistics; }
 
 protected:
@@ -114,7 +107,7 @@ protected:
   std::vector<double> m_distance;
   std::vector<int> m_nearest_source;
   std::vector<double> m_emitted; // sigma of the last windows a pseudo-source emitted
-  double m_max_distance;
+  double m_max_distance;         // in the cache's unit
   double m_window_limit;         // windows whose smallest distance is beyond it are dropped
   const double m_min_window_length;
   const std::size_t m_batch_size;

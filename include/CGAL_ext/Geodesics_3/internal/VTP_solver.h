@@ -141,6 +141,17 @@ public:
     m_first_source_index = 0;
   }
 
+  /// Sets the max distance of the runs from now on, given in the mesh's unit (as
+  /// `Solver_settings::max_distance`; `max_distance()` gives it back in the cache's); between
+  /// runs only.
+  void set_max_distance_in_mesh_unit(double max_distance)
+  {
+    if(!(max_distance >= 0))
+      throw Geodesic_error("max distance must be non-negative, got " + std::to_string(max_distance));
+    m_max_distance = max_distance / m_mesh.unit;
+    m_window_limit = m_max_distance;
+  }
+
   /// Makes the solver ready for another run that starts from the distance field the last one
   /// left instead of +infinity, its sources numbered from `first_source_index` on; only what the
   /// last run wrote is reset. The run lowers the field where its own sources are nearer, and
