@@ -5,7 +5,8 @@
 //   MODEL: plane (round bumps), golf (dimples on a sphere), cylinder, elongated, sizes (three sizes)
 // Prints one Markdown table row; with BENCH_PATTERNS_OFFSETS set, also each found centre's offset
 // from its nearest planted centre, over that instance's radius, on stderr; with
-// BENCH_PATTERNS_MESH=FILE, also writes the mesh built (to run the tool on it, or to view it).
+// BENCH_PATTERNS_MESH=FILE, also writes the mesh built (to run the tool on it, or to view it);
+// with BENCH_PATTERNS_LAMBDA=L, the local rows are approximate (`approximation(L)`).
 #include "support/pattern_meshes.h"
 
 #include <CGAL_ext/detect_repetitive_patterns.h>
@@ -66,9 +67,12 @@ int main(int argc, char** argv)
   const auto patch = scene.patch_radius > 0
                        ? CGAL_ext::Pattern_patch<Mesh>::disk(scene.patch_centre, scene.patch_radius)
                        : CGAL_ext::Pattern_patch<Mesh>::of_vertices(scene.patch_vertices);
+  const char* lambda = std::getenv("BENCH_PATTERNS_LAMBDA");
   const auto start = std::chrono::steady_clock::now();
   const auto found = CGAL_ext::detect_repetitive_patterns<CGAL::Parallel_if_available_tag>(
-    scene.mesh, patch, CGAL_ext::parameters::scale_range(scene.scales).number_of_threads(threads));
+    scene.mesh, patch,
+    CGAL_ext::parameters::scale_range(scene.scales).number_of_threads(threads).approximation(lambda ? std::atof(lambda)
+                                                                                                      : 0.0));
   const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const Score s = score(found.instances, scene.truth);
   if(std::getenv("BENCH_PATTERNS_OFFSETS"))

@@ -63,6 +63,10 @@ void add_patterns_command(CLI::App& app, Patterns_options& options)
                   "How far two signatures may differ to match, relative to the patch's; default 0.35");
   cmd->add_option("--consistency-cutoff", options.consistency_cutoff,
                   "c0: how well matched distances must agree, in [0, 1); default 0.7");
+  cmd->add_option("--lambda", options.lambda,
+                  "Approximate local rows (AVTP, the wavefront reset every lambda mean edge lengths): faster on "
+                  "meshes that make many windows (a golf ball), distances never below the exact ones; the sampling "
+                  "and the arrangement stay exact; default: exact");
   cmd->add_option("--threads", options.threads, "Number of threads; default: all cores");
   cmd->add_option("--output", options.output,
                   "The instances, .json: {\"instances\": [{\"center\", \"center_vertex\", \"scale\", \"energy\", "
@@ -214,6 +218,7 @@ Patterns_found detect(const Mesh_file& file, const CGAL_ext::Pattern_patch<Mesh>
                     .sample_spacing(o.sample_spacing)
                     .match_tolerance(o.match_tolerance)
                     .consistency_cutoff(o.consistency_cutoff)
+                    .approximation(o.lambda)
                     .number_of_threads(o.threads);
   const auto found =
     stroke.empty()

@@ -33,6 +33,7 @@ struct Patterns_options
   double sample_spacing = 1.0 / 3;
   double match_tolerance = 0.35;
   double consistency_cutoff = 0.7;
+  double lambda = 0; // AVTP for the local rows; 0: exact
   int threads = 0;
   std::string output;      // .json
   std::string labels;      // .ply or .txt

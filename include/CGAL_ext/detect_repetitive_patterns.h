@@ -168,6 +168,13 @@ struct Repetitive_patterns
 ///                           within 20 % of its nearest stroke vertex's}
 ///     \cgalParamType{a range of `vertex_descriptor`, at least 2} \cgalParamDefault{none: every scale of the range}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{approximation}
+///     \cgalParamDescription{lambda of AVTP (as in `geodesic_distances()`) for every local distance row (the
+///                           signatures, the distances between samples, the patch and the centres): faster on meshes
+///                           that make many windows, with distances never below the exact ones; `0`: exact. The
+///                           sampling, the patch's border distances and the arrangement stay exact}
+///     \cgalParamType{`double`, non-negative} \cgalParamDefault{`0`}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_threads}
 ///     \cgalParamDescription{with `CGAL::Parallel_tag`: the threads, `0` for TBB's choice}
 ///     \cgalParamType{`int`, non-negative} \cgalParamDefault{`0`}
@@ -228,6 +235,7 @@ detect_repetitive_patterns(const TriangleMesh& tm, const Pattern_patch<TriangleM
   s.scale_min = scales.first;
   s.scale_max = scales.second;
   s.threads = choose_parameter(get_parameter(np, internal_np::number_of_threads), 0);
+  s.approximation = double(choose_parameter(get_parameter(np, internal_np::approximation), s.approximation));
   if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::stroke_t>::value)
     for(auto v : get_parameter(np, internal_np::stroke))
       s.stroke.push_back(std::size_t(get(vim, v)));

@@ -63,6 +63,8 @@ struct Pattern_settings
   /// the scale of its nearest stroke vertex (thesis 5.3.3)
   std::vector<std::size_t> stroke;
   int threads = 0;
+  /// lambda of AVTP for the local rows; 0: exact
+  double approximation = 0;
   /// called with the fraction of the run done, never decreasing, 1 at the end; `false` stops
   /// the run (empty: none)
   std::function<bool(double)> progress;
@@ -209,6 +211,9 @@ private:
       throw Geodesic_error("pattern detection: the energy weights must not be negative");
     if(s.threads < 0)
       throw Geodesic_error("pattern detection: number_of_threads must not be negative");
+    if(!(s.approximation >= 0) || !std::isfinite(s.approximation))
+      throw Geodesic_error("pattern detection: approximation must be 0 (exact) or positive and finite, got " +
+                           std::to_string(s.approximation));
   }
 
   // Local distance rows from `sources` (vertex indices), within `radius` and, when `stop` (vertex
@@ -217,8 +222,12 @@ private:
   void for_each_local_row(const std::vector<std::size_t>& sources, double radius, const HandOver& hand_over,
                           const std::vector<int>& stop = {})
   {
-    if(!m_row_solvers)
-      m_row_solvers.emplace(m_tm, solver_parameters());
+    if(!m_row_solvers) {
+      if(m_settings.approximation > 0)
+        m_row_solvers.emplace(m_tm, solver_parameters().approximation(m_settings.approximation));
+      else
+        m_row_solvers.emplace(m_tm, solver_parameters());
+    }
     std::vector<Source_point> points;
     for(std::size_t v : sources)
       points.push_back(m_row_solvers->mesh().source_point(m_vertex[v]));
