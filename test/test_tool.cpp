@@ -1809,6 +1809,8 @@ const Bad_case bad_cases[] = {
    "'tri.ply' has no per-vertex property 'selected'"},
   {"patterns_radius_beyond_the_mesh", "patterns '" + elephant + "' --patch-center 0 --patch-radius 100", "p.json",
    "larger than the mesh"},
+  {"patterns_negative_lambda", "patterns '" + elephant + "' --patch-center 0 --patch-radius 0.1 --lambda -1", "p.json",
+   "approximation must be 0 (exact) or positive"},
 };
 
 class Bad_input : public Tool, public ::testing::WithParamInterface<Bad_case>
