@@ -51,14 +51,14 @@ public:
   double max_distance_asked() const { return m_settings.max_distance; }
 
   /// Runs one solve from each of `points`, within `max_distance` (in the mesh's unit) and, when
-  /// `stop` (cache vertex indices) is not empty, until each of its vertices is settled; in
+  /// `stop` (a range of mesh vertex indices) is not empty, until each of its vertices is settled; in
   /// parallel across sources. Calls `make_row(solver, mesh, row)` after each run, on the thread
   /// that ran it, then `hand_over(i, row)` in source order from the calling thread. A batch of
   /// rows is solved, then handed over: as many rows as fit `row_budget_bytes` at the size of the
   /// rows made so far, between 4 and 64 per thread (the threads wait for the batch's last row:
   /// the longer the batch, the less they wait).
-  template <class Row, class MakeRow, class HandOver>
-  void for_each_row(const std::vector<Source_point>& points, double max_distance, const std::vector<int>& stop,
+  template <class Row, class StopVertices, class MakeRow, class HandOver>
+  void for_each_row(const std::vector<Source_point>& points, double max_distance, const StopVertices& stop,
                     MakeRow make_row, HandOver hand_over)
   {
     if(points.empty())
@@ -82,8 +82,8 @@ public:
             solver->reset();
             solver->set_max_distance_in_mesh_unit(max_distance);
             solver->add_source(points[first + j]);
-            for(int v : stop)
-              solver->add_stop_vertex(v);
+            for(auto v : stop)
+              solver->add_stop_vertex(int(v));
             solver->run();
             make_row(*solver, m_mesh, rows[j]);
           } catch(...) {
@@ -128,7 +128,8 @@ void for_each_row(const TriangleMesh& tm, const Sources& sources, const NamedPar
                   HandOver hand_over)
 {
   Row_solvers<parallel, TriangleMesh, Vertex_point_map_of<TriangleMesh, NamedParameters>> solvers(tm, np);
-  solvers.template for_each_row<Row>(solvers.mesh().source_points(sources), solvers.max_distance_asked(), {}, make_row,
+  solvers.template for_each_row<Row>(solvers.mesh().source_points(sources), solvers.max_distance_asked(),
+                                     std::vector<int>(), make_row,
                                      hand_over);
 }
 

@@ -220,7 +220,7 @@ private:
   // indices) is not empty, until each of its vertices is settled: `hand_over(i, row)` in order.
   template <class HandOver>
   void for_each_local_row(const std::vector<std::size_t>& sources, double radius, const HandOver& hand_over,
-                          const std::vector<int>& stop = {})
+                          const std::vector<std::size_t>& stop = {})
   {
     if(!m_row_solvers) {
       if(m_settings.approximation > 0)
@@ -256,7 +256,7 @@ private:
           if(m_in_patch[entry.first])
             row.push_back(entry);
       },
-      m_patch_stop);
+      m_patch_vertices);
     return row;
   }
 
@@ -327,12 +327,9 @@ private:
   void set_patch_vertices()
   {
     m_patch_vertices.clear();
-    m_patch_stop.clear();
     for(std::size_t v = 0; v < m_vertex.size(); ++v)
-      if(m_in_patch[v]) {
+      if(m_in_patch[v])
         m_patch_vertices.push_back(v);
-        m_patch_stop.push_back(int(v));
-      }
   }
 
   // A vertex list: connected, with a border; its centre is the vertex farthest from its border
@@ -423,7 +420,7 @@ private:
   // Returns each walker's best vertex and its cost.
   template <class Cost, class MayVisit>
   std::vector<std::pair<std::size_t, double>> descend(const std::vector<std::size_t>& start, double radius,
-                                                      const std::vector<int>& stop, const Cost& cost,
+                                                      const std::vector<std::size_t>& stop, const Cost& cost,
                                                       const MayVisit& may_visit, int max_steps)
   {
     const std::size_t n = start.size();
@@ -475,7 +472,7 @@ private:
   std::size_t patch_centroid(std::size_t start)
   {
     return descend(
-             {start}, std::numeric_limits<double>::infinity(), m_patch_stop,
+             {start}, std::numeric_limits<double>::infinity(), m_patch_vertices,
              [&](std::size_t, std::size_t, const Row& entries) {
                double c = 0;
                for(const auto& [v, d] : entries)
@@ -1163,8 +1160,7 @@ private:
   // the solvers of every local row (made at the first row, released after the last)
   std::optional<Row_solvers<parallel, TriangleMesh, VertexPointMap>> m_row_solvers;
   std::vector<bool> m_in_patch;
-  std::vector<int> m_patch_stop; // the patch's vertices, where rows that must reach them all stop
-  std::vector<std::size_t> m_patch_vertices;
+  std::vector<std::size_t> m_patch_vertices; // increasing; rows that must reach them all stop there
   std::size_t m_center = 0;
   double m_radius = 0; // the largest distance from the centre to a patch vertex
   double m_size = 0;   // the radius of a disk of the patch's area
