@@ -23,7 +23,7 @@ struct alignas(64) Edge_window // one cache line
   Window_geometry geometry;
   int halfedge;          // the half-edge whose face the window's rays enter
   int source;            // the source its paths start from (index in the order sources were added)
-  std::uint32_t version; // changes whenever the window changes or dies: older queue entries are stale
+  std::uint32_t version; // changes when the window dies or is queued again: older queue entries are stale
   std::uint8_t queued;   // waits to be propagated
   Edge_window* next;     // the next window of the edge (sorted by b0), or of the pool's free list
 };
@@ -68,10 +68,15 @@ struct alignas(64) Insertion_output // one cache line or more each: threads writ
 class Edge_window_store
 {
 public:
-  Edge_window_store(const Mesh_cache& mesh, double min_window_length)
+  /// When `requeue_trimmed`, a queued window that loses part of its interval is queued again
+  /// with its new smallest distance (its older entry goes stale); otherwise its entry stays
+  /// valid, with a key that may now be too low, and the queue's user checks the key when the
+  /// window is taken.
+  Edge_window_store(const Mesh_cache& mesh, double min_window_length, bool requeue_trimmed)
     : m_mesh(mesh)
     , m_edge(mesh.number_of_halfedges(), nullptr)
     , m_min_window_length(min_window_length)
+    , m_requeue_trimmed(requeue_trimmed)
   {
   }
 
@@ -160,11 +165,13 @@ public:
         continue;
       }
       // The stored window keeps one piece or more, in place.
-      ++w->version;
       s.b0 = kept[0].first;
       s.b1 = kept[0].second;
-      if(w->queued)
-        out.queued.push_back(Queued_window{window_key(s), w, w->version});
+      if(m_requeue_trimmed) {
+        ++w->version;
+        if(w->queued)
+          out.queued.push_back(Queued_window{window_key(s), w, w->version});
+      }
       Edge_window* last = w;
       for(std::size_t i = 1; i < kept.size(); ++i) {
         Edge_window* p = allocate(slot, *w);
@@ -269,6 +276,7 @@ private:
   std::vector<Edge_window*> m_edge; // the windows of each edge, at its reference half-edge
   Object_pool<Edge_window> m_pool;
   const double m_min_window_length;
+  const bool m_requeue_trimmed;
 };
 
 } // namespace internal

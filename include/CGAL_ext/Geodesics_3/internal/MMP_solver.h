@@ -66,7 +66,7 @@ public:
   MMP_solver(const Mesh_cache& mesh, const Solver_settings& settings, bool parallel)
     : Solver_base(mesh, settings, parallel)
     , m_emits_when_taken(mesh.is_pseudo_source)
-    , m_windows(mesh, m_min_window_length)
+    , m_windows(mesh, m_min_window_length, /*requeue_trimmed=*/!parallel && settings.algorithm == MMP)
     , m_use_heap(!parallel && settings.algorithm == MMP)
     , m_buckets(mesh.mean_edge_length)
   {
@@ -108,6 +108,7 @@ private:
     New_window children[2];
     int number_of_children = 0;
     Vertex_update apex{-1, -1, 0.};
+    double deferred_key = -1; // >= 0: not propagated, to queue again with this key
   };
 
   // ---- sources and pseudo-sources ----
@@ -188,17 +189,30 @@ private:
 
   // ---- propagation and insertion, shared by the three forms ----
 
-  // Takes a window across the face its rays enter: up to two children on the other edges of
-  // the face, and a distance for the apex. Reads the window and the vertex distances only.
-  // The children are trimmed by their edge's end vertices when they are inserted.
-  void propagate(Propagation_output& out) const
+  // Takes a queued window across the face its rays enter: up to two children on the other
+  // edges of the face, and a distance for the apex. Reads the window and the vertex distances
+  // only, and writes the window's queued flag (only the thread that took its entry does). The
+  // children are trimmed by their edge's end vertices when they are inserted.
+  //
+  // With buckets, a window trimmed since it was queued keeps its entry (`Edge_window_store`):
+  // if its smallest distance now lies beyond the buckets taken (`last_bucket_taken`), it is
+  // not propagated but deferred, to be queued again with that key.
+  void propagate(Propagation_output& out, std::size_t last_bucket_taken) const
   {
     out.number_of_children = 0;
     out.apex.vertex = -1;
+    out.deferred_key = -1;
     const Edge_window& ew = *out.window;
     const int h = ew.halfedge;
     Window_geometry w = m_windows.in_frame_of(ew, h);
-    if(!keep_window(w, h, m_distance[m_mesh.source(h)], m_distance[m_mesh.target(h)]))
+    double key;
+    const bool kept = keep_window(w, h, m_distance[m_mesh.source(h)], m_distance[m_mesh.target(h)], key);
+    if(kept && !m_use_heap && m_buckets.index_of(key) > last_bucket_taken) {
+      out.deferred_key = key;
+      return;
+    }
+    out.window->queued = 0;
+    if(!kept)
       return;
     const Halfedge_frame f = m_mesh.frame(h);
     const double crossing = apex_crossing(w, f.apex_x, f.apex_y);
@@ -223,14 +237,17 @@ private:
 
   // ---- sequential MMP and FWP-MMP: each window is clipped into its edge as soon as it is made ----
 
-  void take(const Queue_item& item)
+  void take(const Queue_item& item, std::size_t last_bucket_taken)
   {
     if(item.window) {
-      ++m_statistics.windows_propagated;
       Propagation_output& p = m_propagation_one;
       p.window = item.window;
-      item.window->queued = 0;
-      propagate(p);
+      propagate(p, last_bucket_taken);
+      if(p.deferred_key >= 0) {
+        push(p.deferred_key, item);
+        return;
+      }
+      ++m_statistics.windows_propagated;
       if(p.apex.vertex >= 0)
         relax(p.apex);
       for(int c = 0; c < p.number_of_children; ++c)
@@ -266,7 +283,7 @@ private:
         continue;
       if(top.first > m_max_distance)
         break;
-      take(top.second);
+      take(top.second, std::size_t(-1));
     }
   }
 
@@ -277,9 +294,10 @@ private:
       m_buckets.pop_lowest(bucket);
       if(bucket.empty())
         return;
+      const std::size_t taken = m_buckets.index_of_lowest();
       for(const auto& e : bucket)
         if(!is_stale(e.first, e.second) && e.first <= m_max_distance)
-          take(e.second);
+          take(e.second, taken);
     }
   }
 
@@ -310,6 +328,7 @@ private:
     std::vector<int> child_next;
     std::vector<Insertion_output> thread_outputs; // per pool slot
     std::vector<Edge_result> edge_results;        // per active edge
+    std::size_t last_bucket_taken = 0;            // the highest bucket the selection took from
   };
 
   void run_parallel()
@@ -343,10 +362,12 @@ private:
     std::vector<Bucket_queue<Queue_item>::Entry>& bucket = m_bucket_entries;
     std::vector<Propagation_output>& selected = m_round.selected;
     std::size_t n = 0;
+    m_round.last_bucket_taken = 0;
     while(n < m_batch_size) {
       m_buckets.pop_lowest(bucket, m_batch_size - n);
       if(bucket.empty())
         break;
+      m_round.last_bucket_taken = std::max(m_round.last_bucket_taken, m_buckets.index_of_lowest());
       for(const auto& e : bucket) {
         if(e.first > m_max_distance)
           continue;
@@ -366,7 +387,7 @@ private:
 
   // 2. Propagation, in parallel: each task reads its window and the vertex distances, and
   // writes only its own output and its window's queued flag (each queue entry names one
-  // version of a window, and only the window's current version is ever queued once).
+  // version of a window, and a window has at most one valid entry).
   void propagate_selected(std::size_t n)
   {
     for_each_index(m_parallel, n, propagation_grain, [this](std::size_t i, std::size_t) {
@@ -374,11 +395,11 @@ private:
       if(p.window->version != p.version || !p.window->queued) {
         p.number_of_children = 0;
         p.apex.vertex = -1;
+        p.deferred_key = -1;
         p.window = nullptr;
         return;
       }
-      p.window->queued = 0;
-      propagate(p);
+      propagate(p, m_round.last_bucket_taken);
     });
   }
 
@@ -390,7 +411,8 @@ private:
                                    : m_emitted_windows[std::size_t(id) - 2 * n];
   }
 
-  // 3. Organization: apex distances, then the new windows linked by edge in a fixed order.
+  // 3. Organization: deferred windows queued again, apex distances, then the new windows
+  // linked by edge in a fixed order.
   void organize_by_edge(std::size_t n)
   {
     if(m_round.child_next.size() < 2 * n + m_emitted_windows.size())
@@ -399,6 +421,10 @@ private:
       const Propagation_output& p = m_round.selected[i];
       if(!p.window)
         continue;
+      if(p.deferred_key >= 0) {
+        push(p.deferred_key, Queue_item{p.window, -1, p.version});
+        continue;
+      }
       ++m_statistics.windows_propagated;
       if(p.apex.vertex >= 0)
         relax(p.apex);

@@ -68,10 +68,7 @@ public:
 
   void push(double d, const Payload& v)
   {
-    // Far beyond any wavefront the order hardly matters; cap the number of buckets. (A cast
-    // rounds a non-negative quotient down, without a call to floor.)
-    const double q = d / m_width;
-    const std::size_t i = q > 0 ? (q < double(max_buckets) ? std::size_t(q) : max_buckets) : 0;
+    const std::size_t i = index_of(d);
     if(i >= m_buckets.size())
       m_buckets.resize(i + 1);
     m_buckets[i].emplace_back(d, v);
@@ -118,6 +115,16 @@ public:
     }
     m_size -= out.size();
   }
+  /// The bucket a key goes to; right after `pop_lowest()`, `index_of_lowest()` is the one it
+  /// took from.
+  std::size_t index_of(double d) const
+  {
+    // Far beyond any wavefront the order hardly matters; cap the number of buckets. (A cast
+    // rounds a non-negative quotient down, without a call to floor.)
+    const double q = d / m_width;
+    return q > 0 ? (q < double(max_buckets) ? std::size_t(q) : max_buckets) : 0;
+  }
+  std::size_t index_of_lowest() const { return m_first; }
   template <class Function>
   void for_each(Function f) const
   {

@@ -74,6 +74,11 @@ protected:
   bool keep_window(Window_geometry& w, int h, double d_from, double d_to) const
   {
     double key;
+    return keep_window(w, h, d_from, d_to, key);
+  }
+  /// The same, giving the smallest distance of what is kept.
+  bool keep_window(Window_geometry& w, int h, double d_from, double d_to, double& key) const
+  {
     return trim_by_edge_vertices(w, m_mesh.length(h), d_from, d_to, key) && key <= m_window_limit;
   }
 
