@@ -314,6 +314,7 @@ void run_mmp(const Mesh& tm, vertex_descriptor source, CGAL_ext::Geodesic_algori
   r.add("seconds_merge", stats.seconds_merge);
   r.add("windows_created", stats.windows_created);
   r.add("windows_propagated", stats.windows_propagated);
+  r.add("windows_deferred", stats.windows_deferred);
   r.add("windows_stored", stats.windows_stored);
   r.add("windows_per_vertex", double(stats.windows_created) / nv);
   r.add("windows_stored_per_vertex", double(stats.windows_stored) / nv);

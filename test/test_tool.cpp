@@ -1090,7 +1090,7 @@ const Algorithm_case algorithm_cases[] = {
 bool is_mmp(const std::string& algorithm) { return algorithm == "mmp" || algorithm == "fwp-mmp" || algorithm == "pmmp"; }
 
 /// The keys of the MMP family's statistics.
-const std::vector<std::string> mmp_keys = {"windows_propagated", "windows_stored", "stored_window_bytes",
+const std::vector<std::string> mmp_keys = {"windows_propagated", "windows_deferred", "windows_stored", "stored_window_bytes",
                                            "seconds_organization", "seconds_clipping", "seconds_pushing"};
 
 /// The keys of what was repaired to make the file a mesh (all 0 for a clean file).

@@ -23,7 +23,7 @@ struct alignas(64) Edge_window // one cache line
   Window_geometry geometry;
   int halfedge;          // the half-edge whose face the window's rays enter
   int source;            // the source its paths start from (index in the order sources were added)
-  std::uint32_t version; // changes when the window dies or is queued again: older queue entries are stale
+  std::uint32_t version; // changes when the window is freed (and, with requeue_trimmed, clipped): older entries are stale
   std::uint8_t queued;   // waits to be propagated
   Edge_window* next;     // the next window of the edge (sorted by b0), or of the pool's free list
 };
@@ -112,8 +112,9 @@ public:
 
   /// Clips window `g` (in the frame of half-edge h, from source `source`) into the windows of
   /// its edge. Writes only the edge's windows, the pool's `slot` and `out`: the windows to queue
-  /// (its surviving pieces, and stored windows that changed while waiting to be propagated) and
-  /// the distances of the edge's end vertices that a piece reaches.
+  /// (its surviving pieces, the extra pieces of a split queued window, and with
+  /// `requeue_trimmed` queued windows clipped in place) and the distances of the edge's end
+  /// vertices that a piece reaches.
   void insert(const Window_geometry& g, int h, int source, std::size_t slot, Insertion_output& out)
   {
     const int e = reference(h);

@@ -194,9 +194,10 @@ private:
   // only, and writes the window's queued flag (only the thread that took its entry does). The
   // children are trimmed by their edge's end vertices when they are inserted.
   //
-  // With buckets, a window trimmed since it was queued keeps its entry (`Edge_window_store`):
-  // if its smallest distance now lies beyond the buckets taken (`last_bucket_taken`), it is
-  // not propagated but deferred, to be queued again with that key.
+  // With buckets, a window keeps its queue entry when it is clipped (`Edge_window_store`), and
+  // its end vertices' distances may have dropped since it was queued: if its smallest distance
+  // after trimming now lies in a later bucket than those taken (`last_bucket_taken`), it is not
+  // propagated but deferred, to be queued again with that key (its only valid entry).
   void propagate(Propagation_output& out, std::size_t last_bucket_taken) const
   {
     out.number_of_children = 0;
@@ -244,6 +245,7 @@ private:
       p.window = item.window;
       propagate(p, last_bucket_taken);
       if(p.deferred_key >= 0) {
+        ++m_statistics.windows_deferred;
         push(p.deferred_key, item);
         return;
       }
@@ -422,6 +424,7 @@ private:
       if(!p.window)
         continue;
       if(p.deferred_key >= 0) {
+        ++m_statistics.windows_deferred;
         push(p.deferred_key, Queue_item{p.window, -1, p.version});
         continue;
       }
