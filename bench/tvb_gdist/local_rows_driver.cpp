@@ -1,6 +1,6 @@
 // Copyright (c) 2026 The CGAL_ext geodesics developers.
 //
-// Times tvb-gdist's local_gdist_matrix, row by row, on an OFF mesh. Each row is made the way
+// Times tvb-gdist's local_gdist_matrix, row by row, on a triangle mesh. Each row is made the way
 // local_gdist_matrix makes it: the mesh and one GeodesicAlgorithmExact are built once; for each
 // source, propagate from that one vertex with the max distance and no stop points, then ask
 // best_source for every vertex of the mesh and keep the distances d with d != GEODESIC_INF,
@@ -8,12 +8,15 @@
 //
 // Not built by CMake: run.sh compiles it against a tvb-gdist source folder the user brings.
 //
-// Usage: local_rows_driver MESH.off [K=200] [R=10] [DUMP_PREFIX]
+// Usage: local_rows_driver MESH [K=200] [R=10] [DUMP_PREFIX]
 //   max distance = R * mean length of the mesh's edges. With DUMP_PREFIX, after the timed loop
 //   the rows of the first, middle and last sources are computed again and written one distance
 //   per vertex (inf outside the row) to DUMP_PREFIX<source>.txt.
 
 #include "geodesic_algorithm_exact.h"
+
+#include <CGAL/IO/polygon_soup_io.h>
+#include <CGAL/Simple_cartesian.h>
 
 #include <chrono>
 #include <cstdlib>
@@ -21,35 +24,25 @@
 #include <iomanip>
 #include <iostream>
 #include <limits>
-#include <sstream>
 #include <string>
 #include <vector>
 
 namespace {
 
-// Plain ASCII OFF with triangles only; '#' starts a comment.
-bool read_off(const std::string& file, std::vector<double>& points, std::vector<unsigned>& faces)
+// The mesh as a soup, read by CGAL (OFF, OBJ, PLY, STL...); triangles only.
+bool read_mesh(const std::string& file, std::vector<double>& points, std::vector<unsigned>& faces)
 {
-  std::ifstream in(file);
-  if(!in)
+  std::vector<CGAL::Simple_cartesian<double>::Point_3> positions;
+  std::vector<std::vector<std::size_t>> polygons;
+  if(!CGAL::IO::read_polygon_soup(file, positions, polygons))
     return false;
-  std::stringstream words;
-  for(std::string line; std::getline(in, line);)
-    words << line.substr(0, line.find('#')) << '\n';
-  std::string magic;
-  std::size_t nv = 0, nf = 0, ne = 0;
-  if(!(words >> magic >> nv >> nf >> ne) || magic != "OFF")
-    return false;
-  points.resize(3 * nv);
-  for(double& c : points)
-    if(!(words >> c))
+  for(const auto& p : positions)
+    points.insert(points.end(), {p.x(), p.y(), p.z()});
+  for(const auto& polygon : polygons) {
+    if(polygon.size() != 3)
       return false;
-  faces.reserve(3 * nf);
-  for(std::size_t f = 0; f < nf; ++f) {
-    unsigned k = 0, a = 0, b = 0, c = 0;
-    if(!(words >> k >> a >> b >> c) || k != 3)
-      return false;
-    faces.insert(faces.end(), {a, b, c});
+    for(std::size_t v : polygon)
+      faces.push_back(unsigned(v));
   }
   return true;
 }
@@ -71,7 +64,7 @@ int main(int argc, char** argv)
 
   std::vector<double> points;
   std::vector<unsigned> faces;
-  if(!read_off(argv[1], points, faces)) {
+  if(!read_mesh(argv[1], points, faces)) {
     std::cerr << "local_rows_driver: cannot read '" << argv[1] << "'\n";
     return 1;
   }

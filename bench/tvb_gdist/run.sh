@@ -4,10 +4,10 @@
 # Compiles local_rows_driver.cpp against a tvb-gdist source folder (not part of this project:
 # bring your own checkout) with the flags of our benchmarks, and runs it.
 #
-# Usage: run.sh TVB_GDIST_SOURCE_DIR MESH.off [K=200] [R=10] [DUMP_PREFIX]
+# Usage: run.sh TVB_GDIST_SOURCE_DIR MESH [K=200] [R=10] [DUMP_PREFIX]
 set -euo pipefail
 if [ $# -lt 2 ]; then
-  echo "usage: $0 TVB_GDIST_SOURCE_DIR MESH.off [K=200] [R=10] [DUMP_PREFIX]" >&2
+  echo "usage: $0 TVB_GDIST_SOURCE_DIR MESH [K=200] [R=10] [DUMP_PREFIX]" >&2
   exit 2
 fi
 src=$1; mesh=$2; k=${3:-200}; r=${4:-10}

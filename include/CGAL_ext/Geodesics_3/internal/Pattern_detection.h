@@ -211,9 +211,8 @@ private:
       throw Geodesic_error("pattern detection: the energy weights must not be negative");
     if(s.threads < 0)
       throw Geodesic_error("pattern detection: number_of_threads must not be negative");
-    if(!(s.approximation >= 0) || !std::isfinite(s.approximation))
-      throw Geodesic_error("pattern detection: approximation must be 0 (exact) or positive and finite, got " +
-                           std::to_string(s.approximation));
+    if(s.approximation != 0) // 0: exact rows
+      check_approximation(s.approximation);
   }
 
   // Local distance rows from `sources` (vertex indices), within `radius` and, when `stop` (vertex

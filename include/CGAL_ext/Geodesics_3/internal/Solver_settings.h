@@ -28,6 +28,24 @@ struct Solver_settings
   Geodesic_statistics* statistics = nullptr; // where to report, if anywhere
 };
 
+/// The checks of a max distance and of an approximation's lambda, wherever one is given.
+inline void check_max_distance(double max_distance)
+{
+  if(!(max_distance >= 0)) {
+    std::ostringstream msg;
+    msg << "max distance must be non-negative, got " << max_distance;
+    throw Geodesic_error(msg.str());
+  }
+}
+inline void check_approximation(double lambda)
+{
+  if(!(lambda > 0) || !std::isfinite(lambda)) {
+    std::ostringstream msg;
+    msg << "approximation lambda must be positive and finite, got " << lambda;
+    throw Geodesic_error(msg.str());
+  }
+}
+
 /// Reads `algorithm` (default `default_algorithm`), `max_distance`, `approximation`,
 /// `number_of_threads`, `batch_size` (default by algorithm) and `statistics` from `np`, and
 /// checks each, with one message each; `approximation` and `stop_vertices` go with VTP only.
@@ -43,19 +61,11 @@ Solver_settings read_solver_settings(const NamedParameters& np, Geodesic_algorit
     throw Geodesic_error("unknown geodesic algorithm " + std::to_string(int(s.algorithm)));
 
   s.max_distance = choose_parameter(get_parameter(np, internal_np::max_distance), s.max_distance);
-  if(!(s.max_distance >= 0)) {
-    std::ostringstream msg;
-    msg << "max distance must be non-negative, got " << s.max_distance;
-    throw Geodesic_error(msg.str());
-  }
+  check_max_distance(s.max_distance);
 
   if constexpr(!is_default_parameter<NamedParameters, internal_np::approximation_t>::value) {
     s.approximation = double(get_parameter(np, internal_np::approximation));
-    if(!(s.approximation > 0) || !std::isfinite(s.approximation)) {
-      std::ostringstream msg;
-      msg << "approximation lambda must be positive and finite, got " << s.approximation;
-      throw Geodesic_error(msg.str());
-    }
+    check_approximation(s.approximation);
     if(s.algorithm != VTP)
       throw Geodesic_error("approximation works with the VTP algorithm only");
   }

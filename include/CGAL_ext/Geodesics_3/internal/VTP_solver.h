@@ -146,8 +146,7 @@ public:
   /// runs only.
   void set_max_distance_in_mesh_unit(double max_distance)
   {
-    if(!(max_distance >= 0))
-      throw Geodesic_error("max distance must be non-negative, got " + std::to_string(max_distance));
+    check_max_distance(max_distance);
     m_max_distance = max_distance / m_mesh.unit;
     m_window_limit = m_max_distance;
   }
