@@ -211,8 +211,10 @@ private:
       throw Geodesic_error("pattern detection: the energy weights must not be negative");
     if(s.threads < 0)
       throw Geodesic_error("pattern detection: number_of_threads must not be negative");
-    if(s.approximation != 0) // 0: exact rows
-      check_approximation(s.approximation);
+    // its own message: here 0 is allowed (exact rows), unlike the solvers' lambda
+    if(!(s.approximation >= 0) || !std::isfinite(s.approximation))
+      throw Geodesic_error("pattern detection: approximation must be 0 (exact) or positive and finite, got " +
+                           std::to_string(s.approximation));
   }
 
   // Local distance rows from `sources` (vertex indices), within `radius` and, when `stop` (vertex
