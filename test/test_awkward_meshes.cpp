@@ -476,7 +476,7 @@ TEST(MeshCache, DerivedFramesAreTheTriangleSeenFromEachSide)
       longest = std::max(longest, std::sqrt(CGAL::squared_distance(placed[f][k], placed[f][(k + 1) % 3])));
     }
     for(int k = 0; k < 3; ++k) {
-      const int h = int(3 * f) + k;
+      const int h = 3 * cache.cache_face(int(f)) + k;
       // the mesh's vertices are numbered in the order added, three a face
       const Point& a = placed[f][std::size_t(cache.source(h)) % 3];
       const Point& b = placed[f][std::size_t(cache.target(h)) % 3];

@@ -90,7 +90,12 @@ public:
     for(face_descriptor f : faces(tm))
       m_face_of_index[std::size_t(get(fim, f))] = f;
     m_vertex_index = [vim](vertex_descriptor v) { return int(get(vim, v)); };
-    m_face_index = [fim](face_descriptor f) { return int(get(fim, f)); };
+    const Mesh_cache* cache = m_cache.get();
+    // (an index out of range is passed on, for the check of the source or target to name it)
+    m_face_index = [fim, cache](face_descriptor f) {
+      const long long i = static_cast<long long>(get(fim, f));
+      return i >= 0 && std::size_t(i) < cache->number_of_mesh_faces ? cache->cache_face(int(i)) : int(i);
+    };
     m_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
 
@@ -103,6 +108,7 @@ public:
   double seconds() const { return m_seconds; }
 
   int index(vertex_descriptor v) const { return m_vertex_index(v); }
+  /// The cache's index of face f (see `Mesh_cache::cache_face`).
   int index(face_descriptor f) const { return m_face_index(f); }
   // (named *_of so that they hide none of the graph's free functions, found by ADL)
   /// The vertex of cache index i (a copy of a non-manifold vertex gives that vertex).

@@ -70,11 +70,16 @@ struct Mesh_cache
   // vertices the caller says are one point): per vertex, the next one of its group, in a cycle.
   // Empty when no vertex is glued.
   std::vector<std::int32_t> next_glued;
-  // Faces [0, number_of_mesh_faces) are the caller's. A degenerate (zero-area) face is removed:
+  // Faces [0, number_of_mesh_faces) are the caller's, stored in the order of a Z-order curve
+  // through their centroids (`order_faces`): faces near on the surface are near in memory, and
+  // a propagation reads a face's surroundings together. Caller's face i is cache face
+  // `cache_face(i)`, cache face f is caller's face `mesh_face(f)`. A degenerate (zero-area) face is removed:
   // a cap (its middle vertex on its longest edge) by splitting the face beyond that edge at the
   // middle vertex, which adds a face numbered from number_of_mesh_faces on; a needle (an edge of
   // zero length) by gluing the ends of that edge and making its two other neighbours adjacent.
   std::size_t number_of_mesh_faces = 0;
+  std::vector<std::int32_t> cache_face_of_mesh_face; // per caller's face
+  std::vector<std::int32_t> mesh_face_of_cache_face; // per cache face below number_of_mesh_faces
   std::vector<std::int32_t> mesh_face_of_added; // per added face
   std::vector<std::uint8_t> face_state;          // per face: 0 as given, or changed/removed; empty when none is
   std::vector<std::int32_t> mesh_corner_vertex;  // the caller's corners, kept when a face changed
@@ -103,8 +108,11 @@ struct Mesh_cache
   /// The caller's face that face `f` of the cache is, or lies in.
   int mesh_face(int f) const
   {
-    return std::size_t(f) < number_of_mesh_faces ? f : mesh_face_of_added[std::size_t(f) - number_of_mesh_faces];
+    return std::size_t(f) < number_of_mesh_faces ? mesh_face_of_cache_face[std::size_t(f)]
+                                                 : mesh_face_of_added[std::size_t(f) - number_of_mesh_faces];
   }
+  /// The cache face that the caller's face `mesh_f` is (or was, if the cache changed it).
+  int cache_face(int mesh_f) const { return cache_face_of_mesh_face[std::size_t(mesh_f)]; }
   bool is_face_changed(int f) const { return !face_state.empty() && face_state[std::size_t(f)] != 0; }
   bool is_face_removed(int f) const { return !face_state.empty() && (face_state[std::size_t(f)] & face_removed); }
 
@@ -113,11 +121,14 @@ struct Mesh_cache
   /// Voronoi diagram's points read positions after `finish()`.
   void release_positions() { std::vector<std::array<double, 3>>().swap(position); }
 
-  /// A point of the caller's face `f` (barycentric coordinates `b` in its corner order) as a
-  /// point of a face of the cache: itself unless the face was changed or removed.
+  /// A point of cache face `f`, one of the caller's (`cache_face(i)`; barycentric coordinates `b`
+  /// in its corner order, which is the caller's), as a point of a live face of the cache: itself
+  /// unless the face was changed or removed.
   void relocate_face_point(int& f, std::array<double, 3>& b) const;
-  /// The caller's face and barycentric coordinates of point `p` (cache unit) of cache face `f`.
-  void mesh_face_point(int f, const std::array<double, 3>& p, int& mesh_f, std::array<double, 3>& mesh_b) const;
+  /// The caller's face in which point `p` (cache unit) of cache face `f` lies, as its cache index
+  /// `given_f` (`cache_face(mesh_face(f))`), and the point's barycentric coordinates in the
+  /// corners the caller gave that face.
+  void mesh_face_point(int f, const std::array<double, 3>& p, int& given_f, std::array<double, 3>& mesh_b) const;
 
   bool is_glued(int v) const { return !next_glued.empty() && next_glued[std::size_t(v)] != v; }
   /// Calls `f(u)` for `v` and every vertex glued to it: the vertices of one point of the surface.
@@ -203,6 +214,9 @@ struct Mesh_cache
   /// `opposite_halfedge` are set: splits non-manifold vertices into one copy per fan, and glues
   /// the copies and the vertices of each of `glued_groups` (the caller's indices, checked).
   /// Removes degenerate triangles (see `face_state`).
+  /// Puts the faces, whose corners `corner_vertex` holds in the caller's order, in the order of
+  /// a curve through their centroids (the positions must be set).
+  void order_faces();
   void finish(const std::vector<std::vector<int>>& glued_groups = {});
 
 private:
@@ -214,6 +228,75 @@ private:
   void check_glued_groups(const std::vector<std::vector<int>>& groups) const;
   void compute_vertex_flags();
 };
+
+// Spreads the 10 low bits of x to every third bit (bit i goes to bit 3i).
+inline std::uint64_t spread_bits_by_three(std::uint64_t x)
+{
+  x &= 0x3ff;
+  x = (x | x << 16) & 0x30000ffULL;
+  x = (x | x << 8) & 0x300f00fULL;
+  x = (x | x << 4) & 0x30c30c3ULL;
+  x = (x | x << 2) & 0x9249249ULL;
+  return x;
+}
+
+inline void Mesh_cache::order_faces()
+{
+  const std::size_t nf = corner_vertex.size() / 3;
+  std::array<double, 3> low, high;
+  low.fill(std::numeric_limits<double>::infinity());
+  high.fill(-std::numeric_limits<double>::infinity());
+  for(const std::array<double, 3>& p : position)
+    for(int i = 0; i < 3; ++i) {
+      low[i] = std::min(low[i], p[i]);
+      high[i] = std::max(high[i], p[i]);
+    }
+  const double extent = std::max({high[0] - low[0], high[1] - low[1], high[2] - low[2]});
+  const double scale = extent > 0 ? 1023. / (3 * extent) : 0.;
+  // Each face's key: the Morton code of its centroid on a grid of 1024 steps a side (the bits of
+  // x, y and z interleaved), then its index. Sorted, the faces follow a Z-order curve, those of
+  // one cell in the caller's order. (CGAL's hilbert_sort orders points directly but costs far
+  // more here; doc/design.md.)
+  std::vector<std::uint64_t> key(nf);
+  for(std::size_t f = 0; f < nf; ++f) {
+    std::uint64_t code = 0;
+    for(int i = 0; i < 3; ++i) {
+      double sum = 0;
+      for(int k = 0; k < 3; ++k)
+        sum += position[std::size_t(corner_vertex[3 * f + k])][i] - low[i];
+      code |= spread_bits_by_three(std::uint64_t(sum * scale)) << i;
+    }
+    key[f] = code << 32 | f;
+  }
+  std::sort(key.begin(), key.end());
+  cache_face_of_mesh_face.resize(nf);
+  mesh_face_of_cache_face.resize(nf);
+  for(std::size_t c = 0; c < nf; ++c) {
+    const std::uint32_t f = std::uint32_t(key[c]);
+    cache_face_of_mesh_face[f] = std::int32_t(c);
+    mesh_face_of_cache_face[c] = std::int32_t(f);
+  }
+  std::vector<std::uint64_t>().swap(key);
+  // the corners moved to their faces' places, cycle by cycle of the permutation
+  std::vector<bool> placed(nf, false);
+  for(std::size_t start = 0; start < nf; ++start) {
+    if(placed[start])
+      continue;
+    const std::array<std::int32_t, 3> first{
+      {corner_vertex[3 * start], corner_vertex[3 * start + 1], corner_vertex[3 * start + 2]}};
+    std::size_t c = start;
+    for(;;) {
+      placed[c] = true;
+      const std::size_t f = std::size_t(mesh_face_of_cache_face[c]);
+      if(f == start) {
+        std::copy(first.begin(), first.end(), corner_vertex.begin() + std::ptrdiff_t(3 * c));
+        break;
+      }
+      std::copy_n(corner_vertex.begin() + std::ptrdiff_t(3 * f), 3, corner_vertex.begin() + std::ptrdiff_t(3 * c));
+      c = f;
+    }
+  }
+}
 
 inline void Mesh_cache::finish(const std::vector<std::vector<int>>& glued_groups)
 {
@@ -490,7 +573,7 @@ inline void Mesh_cache::relocate_face_point(int& f, std::array<double, 3>& b) co
     for_each_copy_of_point(mesh_corner_vertex[std::size_t(3 * f + k)], [&](int u) { for_each_outgoing(u, consider); });
   }
   if(best < 0)
-    throw Geodesic_error("a point of degenerate face " + std::to_string(f) + " lies in no face of the mesh");
+    throw Geodesic_error("a point of degenerate face " + std::to_string(mesh_face(f)) + " lies in no face of the mesh");
   for(double& x : best_b)
     x = std::max(0., x);
   const double sum = best_b[0] + best_b[1] + best_b[2];
@@ -500,14 +583,15 @@ inline void Mesh_cache::relocate_face_point(int& f, std::array<double, 3>& b) co
   b = best_b;
 }
 
-inline void Mesh_cache::mesh_face_point(int f, const std::array<double, 3>& p, int& mesh_f,
+inline void Mesh_cache::mesh_face_point(int f, const std::array<double, 3>& p, int& given_f,
                                         std::array<double, 3>& mesh_b) const
 {
-  mesh_f = mesh_face(f);
+  given_f = cache_face(mesh_face(f));
+  // the corners of the caller's face, as given (a face the cache added lies in a changed one)
   const auto& corners = is_face_changed(f) ? mesh_corner_vertex : corner_vertex;
-  mesh_geometry::barycentric(position[std::size_t(corners[std::size_t(3 * mesh_f)])],
-                             position[std::size_t(corners[std::size_t(3 * mesh_f + 1)])],
-                             position[std::size_t(corners[std::size_t(3 * mesh_f + 2)])], p, mesh_b);
+  const std::size_t c = std::size_t(given_f);
+  mesh_geometry::barycentric(position[std::size_t(corners[3 * c])], position[std::size_t(corners[3 * c + 1])],
+                             position[std::size_t(corners[3 * c + 2])], p, mesh_b);
   for(double& x : mesh_b)
     x = std::max(0., x);
   const double sum = mesh_b[0] + mesh_b[1] + mesh_b[2];
@@ -662,7 +746,7 @@ inline void scale_to_unit(Mesh_cache& cache)
 }
 
 /// Builds the cache of `tm`. Vertex `v` of `tm` becomes index `get(vim, v)`, face `f` becomes
-/// index `get(fim, f)`. Throws `Geodesic_error` for an empty mesh, a face that is not a triangle,
+/// index `cache_face(get(fim, f))`. Throws `Geodesic_error` for an empty mesh, a face that is not a triangle,
 /// a non-finite coordinate, or degenerate triangles that cannot be removed.
 template <class TriangleMesh, class VertexPointMap, class VertexIndexMap, class FaceIndexMap>
 void build_mesh_cache(const TriangleMesh& tm, VertexPointMap vpm, VertexIndexMap vim,
@@ -706,23 +790,28 @@ void build_mesh_cache(const TriangleMesh& tm, VertexPointMap vpm, VertexIndexMap
   }
   scale_to_unit(cache);
 
-  auto local_index = get(CGAL::dynamic_halfedge_property_t<int>(), tm);
   cache.corner_vertex.assign(3 * nf, -1);
-  cache.opposite_halfedge.assign(3 * nf, -1);
   seen.assign(nf, 0);
   for(auto f : faces(tm)) {
     const std::size_t fi = checked_index(get(fim, f), nf, seen, "face");
     int k = 0;
     for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, tm), tm)) {
-      if(k < 3) {
+      if(k < 3)
         cache.corner_vertex[3 * fi + k] = static_cast<std::int32_t>(get(vim, source(h, tm)));
-        put(local_index, h, static_cast<int>(3 * fi + k));
-      }
       ++k;
     }
     if(k != 3)
       throw Geodesic_error("face " + std::to_string(fi) + " has " + std::to_string(k) +
                            " vertices; only triangle meshes are supported");
+  }
+  cache.order_faces();
+  auto local_index = get(CGAL::dynamic_halfedge_property_t<int>(), tm);
+  cache.opposite_halfedge.assign(3 * nf, -1);
+  for(auto f : faces(tm)) {
+    const int c = cache.cache_face(int(get(fim, f)));
+    int k = 0;
+    for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, tm), tm))
+      put(local_index, h, 3 * c + k++);
   }
   for(auto f : faces(tm)) {
     for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, tm), tm)) {

@@ -70,7 +70,8 @@ inline std::array<double, 3> snapped_barycentric(std::array<double, 3> b)
   return b;
 }
 
-/// Checks a point of face `face` given by barycentric coordinates (a face index of the mesh,
+/// Checks a point of face `face` given by barycentric coordinates (the cache index of a face of
+/// the caller, `Mesh_cache::cache_face`;
 /// coordinates non-negative and summing to 1) and returns its coordinates with those that are
 /// zero up to round-off made zero, summing to 1. `role` names the point in messages.
 inline std::array<double, 3> checked_barycentric(const Mesh_cache& m, long face, const std::array<double, 3>& b,
@@ -85,7 +86,7 @@ inline std::array<double, 3> checked_barycentric(const Mesh_cache& m, long face,
     std::ostringstream msg;
     msg.precision(17);
     msg << "barycentric coordinates (" << b[0] << ", " << b[1] << ", " << b[2] << ") of the " << role << " in face "
-        << face << " must be non-negative and sum to 1";
+        << m.mesh_face(int(face)) << " must be non-negative and sum to 1";
     throw Geodesic_error(msg.str());
   }
   return snapped_barycentric(b);
