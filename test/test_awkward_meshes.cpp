@@ -495,6 +495,79 @@ TEST(MeshCache, DerivedFramesAreTheTriangleSeenFromEachSide)
   }
 }
 
+// The cache stores the faces along a Z-order curve of their centroids and converts face
+// indices both ways. The elephant's faces, shuffled: the cache puts neighbouring faces together
+// again, its two maps are inverse and keep each face's corners, and a face-point source on the
+// shuffled mesh gives the distances it gives on the mesh as read.
+TEST(MeshCache, FacesAreStoredAlongACurveAndConvertedBack)
+{
+  const Mesh& original = test_mesh("elephant");
+  std::vector<Point> points;
+  for(Vertex v : vertices(original))
+    points.push_back(original.point(v));
+  std::vector<Triangle> triangles;
+  for(Face f : faces(original)) {
+    Triangle t;
+    int k = 0;
+    for(Vertex v : CGAL::vertices_around_face(halfedge(f, original), original))
+      t[std::size_t(k++)] = int(v.idx());
+    triangles.push_back(t);
+  }
+  std::shuffle(triangles.begin(), triangles.end(), std::mt19937(3));
+  const Mesh shuffled = mesh_from_soup(points, triangles);
+
+  CGAL_ext::Geodesics_3::internal::Mesh_cache cache;
+  CGAL_ext::Geodesics_3::internal::build_mesh_cache(shuffled, get(CGAL::vertex_point, shuffled),
+                                                    get(CGAL::vertex_index, shuffled), get(CGAL::face_index, shuffled),
+                                                    cache);
+  ASSERT_EQ(cache.number_of_faces, num_faces(shuffled));
+  auto centroid = [&](Face f) {
+    const auto h = halfedge(f, shuffled);
+    return CGAL::centroid(shuffled.point(source(h, shuffled)), shuffled.point(target(h, shuffled)),
+                          shuffled.point(target(next(h, shuffled), shuffled)));
+  };
+  std::vector<Face> face_of_index(num_faces(shuffled));
+  for(Face f : faces(shuffled))
+    face_of_index[f.idx()] = f;
+  double step_in_cache = 0, step_as_given = 0;
+  for(std::size_t i = 0; i < face_of_index.size(); ++i) {
+    const int c = cache.cache_face(int(i));
+    ASSERT_GE(c, 0);
+    ASSERT_LT(std::size_t(c), cache.number_of_faces);
+    EXPECT_EQ(cache.mesh_face(c), int(i));
+    int k = 0; // corner k is source(halfedge(f)) advanced k times
+    for(auto h : CGAL::halfedges_around_face(halfedge(face_of_index[i], shuffled), shuffled))
+      EXPECT_EQ(cache.source(3 * c + k++), int(source(h, shuffled).idx())) << "face " << i;
+    if(i > 0) {
+      step_as_given += std::sqrt(CGAL::squared_distance(centroid(face_of_index[i - 1]), centroid(face_of_index[i])));
+      step_in_cache += std::sqrt(CGAL::squared_distance(centroid(face_of_index[std::size_t(cache.mesh_face(int(i) - 1))]),
+                                                        centroid(face_of_index[std::size_t(cache.mesh_face(int(i)))])));
+    }
+  }
+  EXPECT_LT(step_in_cache, 0.1 * step_as_given);
+
+  // the shuffled mesh's face with the corners of the original's face 100, and the point at its
+  // centroid (the same point whichever corner a face starts at)
+  auto corner_set = [](const Mesh& m, Face f) {
+    Triangle t;
+    int k = 0;
+    for(Vertex v : CGAL::vertices_around_face(halfedge(f, m), m))
+      t[std::size_t(k++)] = int(v.idx());
+    std::sort(t.begin(), t.end());
+    return t;
+  };
+  const Triangle wanted = corner_set(original, Face(100));
+  Face in_shuffled;
+  for(Face f : faces(shuffled))
+    if(corner_set(shuffled, f) == wanted)
+      in_shuffled = f;
+  ASSERT_NE(in_shuffled, Face());
+  const Barycentric third{{1. / 3, 1. / 3, 1. / 3}};
+  EXPECT_TRUE(agrees(solve(shuffled, std::vector<Face_location>{{in_shuffled, third}}),
+                     solve(original, std::vector<Face_location>{{Face(100), third}}), bbox_diagonal(original), 1e-14,
+                     "a face-point source on the shuffled faces against the faces as read"));
+}
+
 TEST(IsolatedVertex, IsUnreachedAndCannotBeTheOnlySource)
 {
   Mesh m = make_grid(4, 1.);
