@@ -52,8 +52,7 @@ struct List_task
   std::uint32_t input = Window_pool::nil; // the list's windows, detached from it
   double apex_distance = 0; // shortest path to the apex found through the list
   int apex_source = -1;     // the source of that path
-  std::vector<Window> windows;  // the input, trimmed and pruned
-  Window_list to_ac, to_cb;    // children for the lists across A->C and C->B
+  Window_list to_ac, to_cb; // children for the lists across A->C and C->B
 };
 
 /// Geodesic distances from any number of sources by vertex-oriented triangle propagation
@@ -207,6 +206,7 @@ public:
     const auto start = Clock::now();
     check_has_sources(m_mesh, m_sources);
     m_main_slot = m_pool.use_one_slot_per_thread(m_parallel);
+    m_list_windows.resize(m_pool.number_of_slots());
     for(const Source_point& s : m_sources) {
       const int index = m_first_source_index + int(&s - m_sources.data());
       if(s.vertex >= 0) {
@@ -580,12 +580,14 @@ private:
   }
 
   // Takes the windows of the task's list across the face of its half-edge. Reads the mesh and
-  // the vertex distances; writes only `task` and the pool's `slot` (the calling thread's), which
-  // takes back the list's windows and gives the children.
+  // the vertex distances; writes only `task` and what belongs to `slot` (the calling thread's):
+  // the pool's slot, which takes back the list's windows and gives the children, and the
+  // slot's buffer of the list's windows (one a thread rather than one a task, so that it stays in
+  // the thread's cache from list to list).
   void propagate(List_task& task, std::size_t slot)
   {
     const int h = task.halfedge;
-    std::vector<Window>& windows = task.windows;
+    std::vector<Window>& windows = m_list_windows[slot];
     task.to_ac.clear();
     task.to_cb.clear();
     task.apex_distance = infinity();
@@ -717,6 +719,7 @@ private:
   std::vector<Vertex_entry> m_bucket_entries;
   List_task m_task_one;
   std::vector<List_task> m_tasks;
+  std::vector<std::vector<Window>> m_list_windows; // per pool slot: the list being propagated
   Window_pool m_pool;
   std::size_t m_main_slot = 0; // the pool slot of the thread running run()
   std::vector<int> m_stop_vertices;
