@@ -210,13 +210,13 @@ struct Mesh_cache
     } while(h >= 0 && h != start);
   }
 
+  /// Puts the faces, whose corners `corner_vertex` holds in the caller's order, in the order of
+  /// a curve through their centroids (the positions must be set).
+  void order_faces();
   /// Computes the frames, angles and flags once `position`, `corner_vertex` and
   /// `opposite_halfedge` are set: splits non-manifold vertices into one copy per fan, and glues
   /// the copies and the vertices of each of `glued_groups` (the caller's indices, checked).
   /// Removes degenerate triangles (see `face_state`).
-  /// Puts the faces, whose corners `corner_vertex` holds in the caller's order, in the order of
-  /// a curve through their centroids (the positions must be set).
-  void order_faces();
   void finish(const std::vector<std::vector<int>>& glued_groups = {});
 
 private:
