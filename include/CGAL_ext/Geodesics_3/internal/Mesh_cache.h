@@ -210,6 +210,20 @@ struct Mesh_cache
     } while(h >= 0 && h != start);
   }
 
+  /// The lowest and highest coordinates of the positions (+infinity and -infinity when none).
+  std::array<std::array<double, 3>, 2> bounding_box() const
+  {
+    std::array<double, 3> low, high;
+    low.fill(std::numeric_limits<double>::infinity());
+    high.fill(-std::numeric_limits<double>::infinity());
+    for(const std::array<double, 3>& p : position)
+      for(int i = 0; i < 3; ++i) {
+        low[i] = std::min(low[i], p[i]);
+        high[i] = std::max(high[i], p[i]);
+      }
+    return {{low, high}};
+  }
+
   /// Puts the faces, whose corners `corner_vertex` holds in the caller's order, in the order of
   /// a curve through their centroids (the positions must be set).
   void order_faces();
@@ -243,14 +257,7 @@ inline std::uint64_t spread_bits_by_three(std::uint64_t x)
 inline void Mesh_cache::order_faces()
 {
   const std::size_t nf = corner_vertex.size() / 3;
-  std::array<double, 3> low, high;
-  low.fill(std::numeric_limits<double>::infinity());
-  high.fill(-std::numeric_limits<double>::infinity());
-  for(const std::array<double, 3>& p : position)
-    for(int i = 0; i < 3; ++i) {
-      low[i] = std::min(low[i], p[i]);
-      high[i] = std::max(high[i], p[i]);
-    }
+  const auto [low, high] = bounding_box();
   const double extent = std::max({high[0] - low[0], high[1] - low[1], high[2] - low[2]});
   const double scale = extent > 0 ? 1023. / (3 * extent) : 0.;
   // Each face's key: the Morton code of its centroid on a grid of 1024 steps a side (the bits of
@@ -714,14 +721,7 @@ inline void Mesh_cache::compute_vertex_flags()
       (is_border_vertex[v] || sum > two_pi - saddle_angle_tolerance || is_glued(int(v))) ? 1 : 0;
   }
 
-  double lo[3] = {std::numeric_limits<double>::max(), std::numeric_limits<double>::max(),
-                  std::numeric_limits<double>::max()};
-  double hi[3] = {-lo[0], -lo[1], -lo[2]};
-  for(const auto& p : position)
-    for(int i = 0; i < 3; ++i) {
-      lo[i] = std::min(lo[i], p[i]);
-      hi[i] = std::max(hi[i], p[i]);
-    }
+  const auto [lo, hi] = bounding_box();
   bbox_diagonal = position.empty() ? 0. : std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
 }
 
@@ -790,14 +790,17 @@ void build_mesh_cache(const TriangleMesh& tm, VertexPointMap vpm, VertexIndexMap
   }
   scale_to_unit(cache);
 
+  auto local_index = get(CGAL::dynamic_halfedge_property_t<int>(), tm);
   cache.corner_vertex.assign(3 * nf, -1);
   seen.assign(nf, 0);
   for(auto f : faces(tm)) {
     const std::size_t fi = checked_index(get(fim, f), nf, seen, "face");
     int k = 0;
     for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, tm), tm)) {
-      if(k < 3)
+      if(k < 3) {
         cache.corner_vertex[3 * fi + k] = static_cast<std::int32_t>(get(vim, source(h, tm)));
+        put(local_index, h, static_cast<int>(3 * fi + k));
+      }
       ++k;
     }
     if(k != 3)
@@ -805,19 +808,14 @@ void build_mesh_cache(const TriangleMesh& tm, VertexPointMap vpm, VertexIndexMap
                            " vertices; only triangle meshes are supported");
   }
   cache.order_faces();
-  auto local_index = get(CGAL::dynamic_halfedge_property_t<int>(), tm);
+  // half-edge 3i+k of the caller's face i is half-edge k of its cache face
+  auto in_cache = [&cache](int h) { return 3 * cache.cache_face(h / 3) + h % 3; };
   cache.opposite_halfedge.assign(3 * nf, -1);
-  for(auto f : faces(tm)) {
-    const int c = cache.cache_face(int(get(fim, f)));
-    int k = 0;
-    for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, tm), tm))
-      put(local_index, h, 3 * c + k++);
-  }
   for(auto f : faces(tm)) {
     for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, tm), tm)) {
       const halfedge_descriptor o = opposite(h, tm);
       if(!is_border(o, tm))
-        cache.opposite_halfedge[get(local_index, h)] = get(local_index, o);
+        cache.opposite_halfedge[std::size_t(in_cache(get(local_index, h)))] = in_cache(get(local_index, o));
     }
   }
   cache.finish(glued_groups);
