@@ -75,6 +75,7 @@ public:
   Edge_window_store(const Mesh_cache& mesh, double min_window_length, bool requeue_trimmed)
     : m_mesh(mesh)
     , m_edge(mesh.number_of_halfedges(), nullptr)
+    , m_walk_start(mesh.number_of_halfedges(), nullptr)
     , m_min_window_length(min_window_length)
     , m_requeue_trimmed(requeue_trimmed)
   {
@@ -108,7 +109,7 @@ public:
   /// Memory of the windows' pool.
   std::size_t bytes() const { return m_pool.bytes(); }
   /// Memory of the windows and of the edges' lists.
-  std::size_t stored_bytes() const { return m_pool.bytes() + m_edge.size() * sizeof(Edge_window*); }
+  std::size_t stored_bytes() const { return m_pool.bytes() + 2 * m_edge.size() * sizeof(Edge_window*); }
 
   /// Clips window `g` (in the frame of half-edge h, from source `source`) into the windows of
   /// its edge. Writes only the edge's windows, the pool's `slot` and `out`: the windows to queue
@@ -130,11 +131,19 @@ public:
     Edge_window* w = m_edge[e];
     double cut[4];
     int winner[3];
+    // the walk to the first window that overlaps starts from the last insertion's, when that
+    // lies before this one
+    if(Edge_window* hint = m_walk_start[e]; hint && hint->geometry.b1 <= c.b0) {
+      before = hint;
+      w = hint->next;
+    }
     while(w && w->geometry.b1 <= c.b0) {
       before = w;
       w = w->next;
     }
     Edge_window* const last_before_overlap = before; // not changed below: the second pass starts here
+    if(last_before_overlap)
+      m_walk_start[e] = last_before_overlap;
     while(w && !pieces.empty()) {
       Window_geometry& s = w->geometry;
       if(s.b0 >= c.b1)
@@ -160,6 +169,8 @@ public:
       drop_short(kept);
       if(kept.empty()) { // the stored window is beaten everywhere
         (before ? before->next : m_edge[e]) = after;
+        if(m_walk_start[e] == w)
+          m_walk_start[e] = before;
         ++w->version;
         m_pool.release(slot, w);
         w = after;
@@ -275,6 +286,10 @@ private:
 
   const Mesh_cache& m_mesh;
   std::vector<Edge_window*> m_edge; // the windows of each edge, at its reference half-edge
+  // per edge, at its reference half-edge: a window of the edge (or null) where the last
+  // insertion's walk ended. An edge holds tens of windows, scattered in memory, and insertions
+  // come along it: a walk from there rather than from the start of the list touches fewer.
+  std::vector<Edge_window*> m_walk_start;
   Object_pool<Edge_window> m_pool;
   const double m_min_window_length;
   const bool m_requeue_trimmed;
