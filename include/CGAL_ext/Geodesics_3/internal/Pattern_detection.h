@@ -726,6 +726,7 @@ private:
     };
     std::vector<std::size_t> seeds;
     std::size_t next_seed = 0;
+    std::vector<bool> near_fruitless_seed(m_sample_vertex.size(), false);
     for(;;) {
       while(!to_search.empty()) {
         const Instance& from = m_instances[to_search.front()];
@@ -737,11 +738,20 @@ private:
       // patch's centre, away from every instance found so far.
       if(next_seed == 0)
         seeds = landmark_lookalikes();
-      while(next_seed < seeds.size() && !is_free_seed(seeds[next_seed]))
+      while(next_seed < seeds.size() && (near_fruitless_seed[seeds[next_seed]] || !is_free_seed(seeds[next_seed])))
         ++next_seed;
       if(next_seed == seeds.size())
         break;
-      search(seeds[next_seed++], 1.0);
+      const std::size_t seed = seeds[next_seed++];
+      const std::size_t found_before = m_instances.size();
+      search(seed, 1.0);
+      // A search looks at the samples within the search radius (at least 4 patch radii) of its
+      // seed: an instance centred within a patch radius of a seed that found nothing lies in
+      // that seed's neighbourhood, so the look-alikes there are not searched again (on a
+      // curved background, such as a cylinder's, most of the surface looks like the centre).
+      if(m_instances.size() == found_before)
+        for(std::size_t q : neighbourhood(seed, m_radius))
+          near_fruitless_seed[q] = true;
     }
   }
 
