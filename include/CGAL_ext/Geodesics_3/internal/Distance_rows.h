@@ -61,6 +61,21 @@ public:
   void for_each_row(const std::vector<Source_point>& points, double max_distance, const StopVertices& stop,
                     MakeRow make_row, HandOver hand_over)
   {
+    for_each_row_stopping<Row>(
+      points, max_distance,
+      [&stop](std::size_t, VTP_solver& solver) {
+        for(auto v : stop)
+          solver.add_stop_vertex(int(v));
+      },
+      make_row, hand_over);
+  }
+
+  /// The same, the stop vertices of row i given by `add_stops(i, solver)` (which may also set
+  /// the solver's stop floor).
+  template <class Row, class AddStops, class MakeRow, class HandOver>
+  void for_each_row_stopping(const std::vector<Source_point>& points, double max_distance, const AddStops& add_stops,
+                             MakeRow make_row, HandOver hand_over)
+  {
     if(points.empty())
       throw Geodesic_error("no source was given");
     m_arena.execute([&] {
@@ -82,8 +97,7 @@ public:
             solver->reset();
             solver->set_max_distance_in_mesh_unit(max_distance);
             solver->add_source(points[first + j]);
-            for(auto v : stop)
-              solver->add_stop_vertex(int(v));
+            add_stops(first + j, *solver);
             solver->run();
             make_row(*solver, m_mesh, rows[j]);
           } catch(...) {

@@ -223,6 +223,20 @@ private:
   void for_each_local_row(const std::vector<std::size_t>& sources, double radius, const HandOver& hand_over,
                           const std::vector<std::size_t>& stop = {})
   {
+    for_each_local_row_stopping(
+      sources, radius,
+      [&stop](std::size_t, VTP_solver& solver) {
+        for(std::size_t v : stop)
+          solver.add_stop_vertex(int(v));
+      },
+      hand_over);
+  }
+
+  // The same, the stop vertices of row i (and its stop floor) set by `add_stops(i, solver)`.
+  template <class AddStops, class HandOver>
+  void for_each_local_row_stopping(const std::vector<std::size_t>& sources, double radius, const AddStops& add_stops,
+                                   const HandOver& hand_over)
+  {
     if(!m_row_solvers) {
       if(m_settings.approximation > 0)
         m_row_solvers.emplace(m_tm, solver_parameters().approximation(m_settings.approximation));
@@ -232,8 +246,8 @@ private:
     std::vector<Source_point> points;
     for(std::size_t v : sources)
       points.push_back(m_row_solvers->mesh().source_point(m_vertex[v]));
-    m_row_solvers->template for_each_row<Row>(
-      points, radius, stop,
+    m_row_solvers->template for_each_row_stopping<Row>(
+      points, radius, add_stops,
       [](const VTP_solver& solver, const auto& mesh, Row& row) { make_sparse_row(solver, mesh, row); }, hand_over);
     m_times->distance_rows += sources.size();
   }
@@ -414,14 +428,15 @@ private:
 
   // A descent over vertices for several walkers at once (the patch's centroid, the instances'
   // centres). Walker w starts at start[w]; every step evaluates the vertices tried, one local
-  // row each (within `radius`, and until the vertices of `stop` are settled), in one batch:
+  // row each (within `radius`, and until the stop vertices that `add_stops(w, solver)` gives
+  // walker w's rows are settled), in one batch:
   // first the starts, then the unvisited neighbours of each moving walker's best vertex that
   // `may_visit(w, vertex)` lets in. `cost(w, vertex, row)` is a vertex's cost; a walker stops
   // when none of its vertices tried costs less than its best, and all stop after `max_steps`.
   // Returns each walker's best vertex and its cost.
-  template <class Cost, class MayVisit>
+  template <class AddStops, class Cost, class MayVisit>
   std::vector<std::pair<std::size_t, double>> descend(const std::vector<std::size_t>& start, double radius,
-                                                      const std::vector<std::size_t>& stop, const Cost& cost,
+                                                      const AddStops& add_stops, const Cost& cost,
                                                       const MayVisit& may_visit, int max_steps)
   {
     const std::size_t n = start.size();
@@ -438,8 +453,8 @@ private:
       for(const auto& t : tried)
         sources.push_back(t.second);
       std::vector<bool> moved(n, false);
-      for_each_local_row(
-        sources, radius,
+      for_each_local_row_stopping(
+        sources, radius, [&](std::size_t r, VTP_solver& solver) { add_stops(tried[r].first, solver); },
         [&](std::size_t r, const Row& entries) {
           const auto [w, v] = tried[r];
           const double c = cost(w, v, entries);
@@ -447,8 +462,7 @@ private:
             best[w] = {v, c};
             moved[w] = true;
           }
-        },
-        stop);
+        });
       tried.clear();
       for(std::size_t w = 0; w < n; ++w) {
         if(!moved[w])
@@ -473,7 +487,11 @@ private:
   std::size_t patch_centroid(std::size_t start)
   {
     return descend(
-             {start}, std::numeric_limits<double>::infinity(), m_patch_vertices,
+             {start}, std::numeric_limits<double>::infinity(),
+             [this](std::size_t, VTP_solver& solver) {
+               for(std::size_t v : m_patch_vertices)
+                 solver.add_stop_vertex(int(v));
+             },
              [&](std::size_t, std::size_t, const Row& entries) {
                double c = 0;
                for(const auto& [v, d] : entries)
@@ -1060,8 +1078,22 @@ private:
     for(std::size_t a = 1; a < n; ++a)
       start.push_back(m_instances[a].center_vertex);
     const int max_steps = 2 + int(std::ceil(3 * m_spacing * m_scales.back() / std::max(m_mean_edge, 1e-300)));
+    // A row needs the signature's disk, the vertices allowed, and the images within `reach`:
+    // it stops once the images are settled (when they all lie within `reach`), its costs the
+    // same as a row to `reach`.
+    std::vector<std::vector<std::size_t>> image_vertices(n);
+    for(std::size_t a = 1; a < n; ++a)
+      for(std::size_t q : m_instances[a].correspondence.image)
+        if(q != Pattern_correspondence::unmapped)
+          image_vertices[a].push_back(m_sample_vertex[q]);
+    const auto add_stops = [&](std::size_t w, VTP_solver& solver) {
+      const double scale = m_scales[m_instances[w + 1].scale_step];
+      for(std::size_t v : image_vertices[w + 1])
+        solver.add_stop_vertex(int(v));
+      solver.set_stop_floor_in_mesh_unit(std::max(signature_radius, 2 * m_spacing) * scale);
+    };
     const auto placed = descend(
-      start, reach, {},
+      start, reach, add_stops,
       [&](std::size_t w, std::size_t, const Row& entries) { return cost(w + 1, entries); },
       [&](std::size_t w, std::size_t v) { return is_allowed(w + 1, v); }, max_steps);
     for(std::size_t a = 1; a < n; ++a) {

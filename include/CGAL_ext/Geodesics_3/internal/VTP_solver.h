@@ -150,6 +150,10 @@ public:
     m_window_limit = m_max_distance;
   }
 
+  /// With stop vertices, the run goes on to this distance (in the mesh's unit) at least, even
+  /// once they are all settled; for the next run only.
+  void set_stop_floor_in_mesh_unit(double floor) { m_stop_floor = floor / m_mesh.unit; }
+
   /// Makes the solver ready for another run that starts from the distance field the last one
   /// left instead of +infinity, its sources numbered from `first_source_index` on; only what the
   /// last run wrote is reset. The run lowers the field where its own sources are nearer, and
@@ -258,6 +262,7 @@ private:
     m_stop_vertices.clear();
     m_stops_taken = 0;
     m_stop_limit = infinity();
+    m_stop_floor = 0;
     m_heap.clear();
     m_buckets.clear();
     m_window_limit = m_max_distance;
@@ -268,7 +273,7 @@ private:
   // The distance up to which results are wanted.
   double limit() const { return std::min(m_max_distance, m_stop_limit); }
 
-  // Once every stop vertex is taken, nothing beyond the farthest of them is wanted. Distances
+  // Once every stop vertex is taken, nothing beyond the farthest of them (and the floor) is wanted. Distances
   // only decrease, so a limit computed earlier is never too small: it is refreshed only now and
   // then, when it is cheap to do so.
   void update_stop_limit()
@@ -278,7 +283,7 @@ private:
     double farthest = 0;
     for(int v : m_stop_vertices)
       farthest = std::max(farthest, m_distance[v]);
-    m_stop_limit = farthest;
+    m_stop_limit = std::max(farthest, m_stop_floor);
   }
 
   void relax(int v, double d, int source)
@@ -731,6 +736,7 @@ private:
   std::vector<std::uint32_t> m_read_stamp; // per vertex: the last run that read it (empty: not noted)
   std::uint32_t m_run = 1;
   double m_stop_limit = infinity();
+  double m_stop_floor = 0; // see set_stop_floor_in_mesh_unit
   const double m_reset_step; // lambda h, or 0 for exact propagation
   double m_next_reset = 0;
   bool m_flushing = false; // lists are scheduled whether or not they are in the swept region
