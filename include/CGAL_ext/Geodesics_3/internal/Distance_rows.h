@@ -27,6 +27,17 @@ typedef std::pair<std::size_t, double> Row_entry;
 /// The memory the rows of a batch may take (`for_each_row`).
 constexpr std::size_t row_budget_bytes = std::size_t(64) << 20;
 
+/// The `add_stops` of `Row_solvers::for_each_row_stopping` that gives every row the stop vertices
+/// `stop` (mesh vertex indices), kept by reference.
+template <class StopVertices>
+auto same_stops_for_every_row(const StopVertices& stop)
+{
+  return [&stop](std::size_t, VTP_solver& solver) {
+    for(auto v : stop)
+      solver.add_stop_vertex(int(v));
+  };
+}
+
 /// Single-source VTP solves on one mesh, any number of calls: the mesh cache, the task arena
 /// and one solver per thread are made once and kept (a caller that asks for a few rows at a
 /// time, again and again, pays for them once, and a row costs what it sweeps). One call at a
@@ -61,13 +72,7 @@ public:
   void for_each_row(const std::vector<Source_point>& points, double max_distance, const StopVertices& stop,
                     MakeRow make_row, HandOver hand_over)
   {
-    for_each_row_stopping<Row>(
-      points, max_distance,
-      [&stop](std::size_t, VTP_solver& solver) {
-        for(auto v : stop)
-          solver.add_stop_vertex(int(v));
-      },
-      make_row, hand_over);
+    for_each_row_stopping<Row>(points, max_distance, same_stops_for_every_row(stop), make_row, hand_over);
   }
 
   /// The same, the stop vertices of row i given by `add_stops(i, solver)` (which may also set

@@ -223,13 +223,7 @@ private:
   void for_each_local_row(const std::vector<std::size_t>& sources, double radius, const HandOver& hand_over,
                           const std::vector<std::size_t>& stop = {})
   {
-    for_each_local_row_stopping(
-      sources, radius,
-      [&stop](std::size_t, VTP_solver& solver) {
-        for(std::size_t v : stop)
-          solver.add_stop_vertex(int(v));
-      },
-      hand_over);
+    for_each_local_row_stopping(sources, radius, same_stops_for_every_row(stop), hand_over);
   }
 
   // The same, the stop vertices of row i (and its stop floor) set by `add_stops(i, solver)`.
@@ -487,11 +481,7 @@ private:
   std::size_t patch_centroid(std::size_t start)
   {
     return descend(
-             {start}, std::numeric_limits<double>::infinity(),
-             [this](std::size_t, VTP_solver& solver) {
-               for(std::size_t v : m_patch_vertices)
-                 solver.add_stop_vertex(int(v));
-             },
+             {start}, std::numeric_limits<double>::infinity(), same_stops_for_every_row(m_patch_vertices),
              [&](std::size_t, std::size_t, const Row& entries) {
                double c = 0;
                for(const auto& [v, d] : entries)

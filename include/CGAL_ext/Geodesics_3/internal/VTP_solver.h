@@ -273,9 +273,9 @@ private:
   // The distance up to which results are wanted.
   double limit() const { return std::min(m_max_distance, m_stop_limit); }
 
-  // Once every stop vertex is taken, nothing beyond the farthest of them (and the floor) is wanted. Distances
-  // only decrease, so a limit computed earlier is never too small: it is refreshed only now and
-  // then, when it is cheap to do so.
+  // Once every stop vertex is taken, nothing beyond the farthest of them (and the floor) is
+  // wanted. Distances only decrease, so a limit computed earlier is never too small: it is
+  // refreshed only now and then, when it is cheap to do so.
   void update_stop_limit()
   {
     if(m_stop_vertices.empty() || m_stops_taken < m_stop_vertices.size())
