@@ -506,13 +506,8 @@ TEST(MeshCache, FacesAreStoredAlongACurveAndConvertedBack)
   for(Vertex v : vertices(original))
     points.push_back(original.point(v));
   std::vector<Triangle> triangles;
-  for(Face f : faces(original)) {
-    Triangle t;
-    int k = 0;
-    for(Vertex v : CGAL::vertices_around_face(halfedge(f, original), original))
-      t[std::size_t(k++)] = int(v.idx());
-    triangles.push_back(t);
-  }
+  for(Face f : faces(original))
+    triangles.push_back(corners_of(original, f));
   std::shuffle(triangles.begin(), triangles.end(), std::mt19937(3));
   const Mesh shuffled = mesh_from_soup(points, triangles);
 
@@ -549,10 +544,7 @@ TEST(MeshCache, FacesAreStoredAlongACurveAndConvertedBack)
   // the shuffled mesh's face with the corners of the original's face 100, and the point at its
   // centroid (the same point whichever corner a face starts at)
   auto corner_set = [](const Mesh& m, Face f) {
-    Triangle t;
-    int k = 0;
-    for(Vertex v : CGAL::vertices_around_face(halfedge(f, m), m))
-      t[std::size_t(k++)] = int(v.idx());
+    Triangle t = corners_of(m, f);
     std::sort(t.begin(), t.end());
     return t;
   };

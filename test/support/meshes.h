@@ -37,6 +37,16 @@ typedef std::array<int, 3> Triangle;
 const double inf = std::numeric_limits<double>::infinity();
 const double pi = 3.14159265358979323846;
 
+/// The vertex indices of a triangle of `m`, from the source of its half-edge on.
+inline Triangle corners_of(const Mesh& m, Face f)
+{
+  Triangle t;
+  std::size_t k = 0;
+  for(Vertex v : m.vertices_around_face(m.halfedge(f)))
+    t[k++] = int(v.idx());
+  return t;
+}
+
 // ---------------------------------------------------------------------------------------------
 // Meshes read from files
 

@@ -73,10 +73,11 @@ struct Mesh_cache
   // Faces [0, number_of_mesh_faces) are the caller's, stored in the order of a Z-order curve
   // through their centroids (`order_faces`): faces near on the surface are near in memory, and
   // a propagation reads a face's surroundings together. Caller's face i is cache face
-  // `cache_face(i)`, cache face f is caller's face `mesh_face(f)`. A degenerate (zero-area) face is removed:
-  // a cap (its middle vertex on its longest edge) by splitting the face beyond that edge at the
-  // middle vertex, which adds a face numbered from number_of_mesh_faces on; a needle (an edge of
-  // zero length) by gluing the ends of that edge and making its two other neighbours adjacent.
+  // `cache_face(i)`, cache face f is caller's face `mesh_face(f)`. A degenerate (zero-area)
+  // face is removed: a cap (its middle vertex on its longest edge) by splitting the face beyond
+  // that edge at the middle vertex, which adds a face numbered from number_of_mesh_faces on; a
+  // needle (an edge of zero length) by gluing the ends of that edge and making its two other
+  // neighbours adjacent.
   std::size_t number_of_mesh_faces = 0;
   std::vector<std::int32_t> cache_face_of_mesh_face; // per caller's face
   std::vector<std::int32_t> mesh_face_of_cache_face; // per cache face below number_of_mesh_faces
