@@ -74,8 +74,7 @@ public:
   /// window is taken.
   Edge_window_store(const Mesh_cache& mesh, double min_window_length, bool requeue_trimmed)
     : m_mesh(mesh)
-    , m_edge(mesh.number_of_halfedges(), nullptr)
-    , m_walk_start(mesh.number_of_halfedges(), nullptr)
+    , m_edge(mesh.number_of_halfedges())
     , m_min_window_length(min_window_length)
     , m_requeue_trimmed(requeue_trimmed)
   {
@@ -93,7 +92,7 @@ public:
     return (o < 0 || h < o) ? h : o;
   }
   /// The windows of the edge of half-edge h, sorted along the reference half-edge.
-  const Edge_window* windows_of_edge(int h) const { return m_edge[reference(h)]; }
+  const Edge_window* windows_of_edge(int h) const { return m_edge[reference(h)].first; }
 
   /// A stored window in the frame of half-edge h of its edge.
   Window_geometry in_frame_of(const Edge_window& w, int h) const
@@ -109,7 +108,7 @@ public:
   /// Memory of the windows' pool.
   std::size_t bytes() const { return m_pool.bytes(); }
   /// Memory of the windows and of the edges' lists.
-  std::size_t stored_bytes() const { return m_pool.bytes() + 2 * m_edge.size() * sizeof(Edge_window*); }
+  std::size_t stored_bytes() const { return m_pool.bytes() + m_edge.size() * sizeof(Edge_list); }
 
   /// Clips window `g` (in the frame of half-edge h, from source `source`) into the windows of
   /// its edge. Writes only the edge's windows, the pool's `slot` and `out`: the windows to queue
@@ -128,12 +127,13 @@ public:
     pieces.clear();
     pieces.emplace_back(c.b0, c.b1);
     Edge_window* before = nullptr; // the stored window before the current one
-    Edge_window* w = m_edge[e];
+    Edge_list& list = m_edge[e];
+    Edge_window* w = list.first;
     double cut[4];
     int winner[3];
     // the walk to the first window that overlaps starts from the last insertion's, when that
     // lies before this one
-    if(Edge_window* hint = m_walk_start[e]; hint && hint->geometry.b1 <= c.b0) {
+    if(Edge_window* hint = list.walk_start; hint && hint->geometry.b1 <= c.b0) {
       before = hint;
       w = hint->next;
     }
@@ -143,7 +143,7 @@ public:
     }
     Edge_window* const last_before_overlap = before; // not changed below: the second pass starts here
     if(last_before_overlap)
-      m_walk_start[e] = last_before_overlap;
+      list.walk_start = last_before_overlap;
     while(w && !pieces.empty()) {
       Window_geometry& s = w->geometry;
       if(s.b0 >= c.b1)
@@ -168,9 +168,9 @@ public:
       }
       drop_short(kept);
       if(kept.empty()) { // the stored window is beaten everywhere
-        (before ? before->next : m_edge[e]) = after;
-        if(m_walk_start[e] == w)
-          m_walk_start[e] = before;
+        (before ? before->next : list.first) = after;
+        if(list.walk_start == w)
+          list.walk_start = before;
         ++w->version;
         m_pool.release(slot, w);
         w = after;
@@ -205,7 +205,7 @@ public:
 
     // The new window's pieces fill gaps between stored windows: link each where it belongs.
     before = last_before_overlap;
-    w = before ? before->next : m_edge[e];
+    w = before ? before->next : list.first;
     for(const auto& iv : pieces) {
       while(w && w->geometry.b0 < iv.first) {
         before = w;
@@ -220,7 +220,7 @@ public:
       model.queued = 1;
       Edge_window* p = allocate(slot, model);
       p->next = w;
-      (before ? before->next : m_edge[e]) = p;
+      (before ? before->next : list.first) = p;
       before = p;
       ++out.created;
       out.queued.push_back(Queued_window{window_key(p->geometry), p, p->version});
@@ -285,11 +285,16 @@ private:
   }
 
   const Mesh_cache& m_mesh;
-  std::vector<Edge_window*> m_edge; // the windows of each edge, at its reference half-edge
-  // per edge, at its reference half-edge: a window of the edge (or null) where the last
-  // insertion's walk ended. An edge holds tens of windows, scattered in memory, and insertions
-  // come along it: a walk from there rather than from the start of the list touches fewer.
-  std::vector<Edge_window*> m_walk_start;
+  // The windows of an edge: the first, and one (or null) where the last insertion's walk ended.
+  // An edge holds tens of windows, scattered in memory, and insertions come along it: a walk
+  // from there rather than from the start of the list touches fewer. Side by side, both come
+  // in one cache line.
+  struct Edge_list
+  {
+    Edge_window* first = nullptr;
+    Edge_window* walk_start = nullptr;
+  };
+  std::vector<Edge_list> m_edge; // at each edge's reference half-edge
   Object_pool<Edge_window> m_pool;
   const double m_min_window_length;
   const bool m_requeue_trimmed;
