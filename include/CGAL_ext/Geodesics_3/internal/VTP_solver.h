@@ -661,20 +661,25 @@ private:
     if(windows.size() < 2)
       return;
     sort_by_start(windows);
-    const std::size_t n = windows.size();
-    for(std::size_t i = 0; i < n; ++i) {
-      Window& wi = windows[i];
-      for(std::size_t j = i + 1; j < n && wi.b1 > wi.b0; ++j) {
+    for(std::size_t i = 0; i < windows.size(); ++i) {
+      for(std::size_t j = i + 1; j < windows.size() && windows[i].b1 > windows[i].b0; ++j) {
+        Window& wi = windows[i];
         Window& wj = windows[j];
         if(wj.b0 >= wi.b1)
           break; // sorted by where they start (skipping a pair only keeps more windows)
         if(!(wj.b1 > wj.b0))
           continue;
-        const int emptied = clip_pair(wi, wj);
-        if(emptied & 1)
+        Window right;
+        const int outcome = clip_pair(wi, wj, &right);
+        if(outcome & 1)
           wi.b1 = wi.b0;
-        if(emptied & 2)
+        if(outcome & 2)
           wj.b1 = wj.b0;
+        if(outcome & 4) {
+          auto at = std::upper_bound(windows.begin() + std::ptrdiff_t(j) + 1, windows.end(), right,
+                                     [](const Window& a, const Window& b) { return a.b0 < b.b0; });
+          windows.insert(at, right);
+        }
       }
     }
     windows.erase(std::remove_if(windows.begin(), windows.end(), [](const Window& w) { return !(w.b1 > w.b0); }),

@@ -252,9 +252,12 @@ inline int compare_on_overlap(const Window_geometry& w0, const Window_geometry& 
 
 /// Clips two list windows of the same edge against each other where they overlap: a window
 /// loses the part of the overlap where the other one is strictly shorter, when that part is at
-/// an end of its interval (a loss strictly inside its interval would split it, and is left
-/// alone). Returns a bit set: 1 if w0 became empty, 2 if w1 did.
-inline int clip_pair(Window& w0, Window& w1)
+/// an end of its interval. When one window's interval holds the whole overlap strictly inside
+/// it and loses a part of it, that window is split, if `split` is given: it keeps what comes
+/// before the last part it loses, and `split[0]` (for w0) or `split[1]` (for w1) receives what
+/// comes after it. Other losses strictly inside an interval are left alone.
+/// Returns a bit set: 1 if w0 became empty, 2 if w1 did, 4 if w0 was split, 8 if w1 was.
+inline int clip_pair(Window& w0, Window& w1, Window* split = nullptr)
 {
   const double lo = std::max(w0.b0, w1.b0), hi = std::min(w0.b1, w1.b1);
   if(!(hi > lo))
@@ -267,9 +270,12 @@ inline int clip_pair(Window& w0, Window& w1)
   double cut[4];
   int winner[3];
   const int n = compare_on_overlap(w0, w1, lo, hi, lo0, hi0, lo1, hi1, cut, winner);
-  // A window gives up the pieces the other one wins, from each end of the overlap that is an
-  // end of its own interval, inwards. Returns true if nothing is left of it.
-  auto trim = [&](Window& w, double d_lo, double d_hi, int other) {
+  // A window gives up the pieces the other one wins from each end of the overlap that is an end
+  // of its own interval, inwards. One that holds the overlap strictly inside is split at the
+  // last piece it loses (`right` receives the part after it): the window inside it is the
+  // shorter there, and would otherwise be clipped against it again list after list.
+  // Returns 1 if nothing is left of the window, 2 if it was split.
+  auto trim = [&](Window& w, double d_lo, double d_hi, int other, Window* right) {
     int first = 0, last = n - 2;
     if(w.b0 == lo)
       while(first <= last && winner[first] == other)
@@ -279,7 +285,7 @@ inline int clip_pair(Window& w0, Window& w1)
         --last;
     if(first > last) {
       if(w.b0 == lo && w.b1 == hi)
-        return true;
+        return 1;
       if(w.b0 == lo) {
         w.b0 = hi;
         w.d0 = d_hi;
@@ -287,7 +293,7 @@ inline int clip_pair(Window& w0, Window& w1)
         w.b1 = lo;
         w.d1 = d_lo;
       }
-      return false;
+      return 0;
     }
     if(first > 0) {
       w.b0 = cut[first];
@@ -297,14 +303,21 @@ inline int clip_pair(Window& w0, Window& w1)
       w.b1 = cut[last + 1];
       w.d1 = distance_at(w, w.b1);
     }
-    return false;
+    if(right && w.b0 < lo && w.b1 > hi)
+      for(int k = n - 2; k >= 0; --k)
+        if(winner[k] == other) {
+          *right = w;
+          right->b0 = cut[k + 1];
+          right->d0 = distance_at(w, right->b0);
+          w.b1 = cut[k];
+          w.d1 = distance_at(w, w.b1);
+          return 2;
+        }
+    return 0;
   };
-  int result = 0;
-  if(trim(w0, lo0, hi0, 1))
-    result |= 1;
-  if(trim(w1, lo1, hi1, 0))
-    result |= 2;
-  return result;
+  const int outcome0 = trim(w0, lo0, hi0, 1, split);
+  const int outcome1 = trim(w1, lo1, hi1, 0, nullptr);
+  return (outcome0 == 1 ? 1 : outcome0 == 2 ? 4 : 0) | (outcome1 == 1 ? 2 : 0);
 }
 
 /// A segment E0 -> E1 of the parent frame that a child window lands on, with what is needed to
