@@ -661,10 +661,12 @@ private:
     if(windows.size() < 2)
       return;
     sort_by_start(windows);
-    for(std::size_t i = 0; i < windows.size(); ++i) {
-      for(std::size_t j = i + 1; j < windows.size() && windows[i].b1 > windows[i].b0; ++j) {
-        Window& wi = windows[i];
-        Window& wj = windows[j];
+    Window* w = windows.data(); // and n: refreshed after a split adds a window
+    std::size_t n = windows.size();
+    for(std::size_t i = 0; i < n; ++i) {
+      for(std::size_t j = i + 1; j < n && w[i].b1 > w[i].b0; ++j) {
+        Window& wi = w[i];
+        Window& wj = w[j];
         if(wj.b0 >= wi.b1)
           break; // sorted by where they start (skipping a pair only keeps more windows)
         if(!(wj.b1 > wj.b0))
@@ -679,6 +681,8 @@ private:
           auto at = std::upper_bound(windows.begin() + std::ptrdiff_t(j) + 1, windows.end(), right,
                                      [](const Window& a, const Window& b) { return a.b0 < b.b0; });
           windows.insert(at, right);
+          w = windows.data();
+          n = windows.size();
         }
       }
     }
