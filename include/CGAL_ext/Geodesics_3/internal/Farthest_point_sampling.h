@@ -77,7 +77,8 @@ public:
     const int index = int(m_samples.size());
     m_samples.push_back(v);
     m_batch.assign(1, v);
-    if(!m_twins.empty() && index > 0 && !is_isolated_point(m_mesh, v))
+    if(!m_twins.empty() && index > 0 && !is_isolated_point(m_mesh, v) &&
+       m_solver.reached_vertices().size() <= max_vertices_before_batches)
       add_likely_next_samples();
     if(m_batch.size() == 1) {
       run_one(v, index);
@@ -216,6 +217,10 @@ private:
       push_candidate(c);
   }
   static constexpr std::size_t max_candidates_looked_at = 64;
+  // Samples run in batches only once a run reaches at most this many vertices: a larger run
+  // keeps every thread busy by itself, and a run beside it would take one of them for the
+  // whole run, in vain if it is undone.
+  static constexpr std::size_t max_vertices_before_batches = 8192;
   static constexpr std::size_t runs_per_thread = 1;
 
   void push_candidate(const Candidate& c)
