@@ -252,11 +252,11 @@ inline int compare_on_overlap(const Window_geometry& w0, const Window_geometry& 
 
 /// Clips two list windows of the same edge against each other where they overlap: a window
 /// loses the part of the overlap where the other one is strictly shorter, when that part is at
-/// an end of its interval. When one window's interval holds the whole overlap strictly inside
-/// it and loses a part of it, that window is split, if `split` is given: it keeps what comes
-/// before the last part it loses, and `split[0]` (for w0) or `split[1]` (for w1) receives what
-/// comes after it. Other losses strictly inside an interval are left alone.
-/// Returns a bit set: 1 if w0 became empty, 2 if w1 did, 4 if w0 was split, 8 if w1 was.
+/// an end of its interval. When w0's interval holds the whole overlap strictly inside it and w0
+/// loses a part of it, w0 is split, if `split` is given: it keeps what comes before the last
+/// part it loses, and `*split` receives what comes after it (of two windows sorted by where they
+/// start, only the first can hold the other). Other losses strictly inside an interval are left
+/// alone. Returns a bit set: 1 if w0 became empty, 2 if w1 did, 4 if w0 was split.
 inline int clip_pair(Window& w0, Window& w1, Window* split = nullptr)
 {
   const double lo = std::max(w0.b0, w1.b0), hi = std::min(w0.b1, w1.b1);
@@ -271,9 +271,9 @@ inline int clip_pair(Window& w0, Window& w1, Window* split = nullptr)
   int winner[3];
   const int n = compare_on_overlap(w0, w1, lo, hi, lo0, hi0, lo1, hi1, cut, winner);
   // A window gives up the pieces the other one wins from each end of the overlap that is an end
-  // of its own interval, inwards. One that holds the overlap strictly inside is split at the
-  // last piece it loses (`right` receives the part after it): the window inside it is the
-  // shorter there, and would otherwise be clipped against it again list after list.
+  // of its own interval, inwards. With `right`, one that holds the overlap strictly inside is
+  // split at the last piece it loses (`right` receives the part after it): the window inside
+  // it is the shorter there, and would otherwise be clipped against it again list after list.
   // Returns 1 if nothing is left of the window, 2 if it was split.
   auto trim = [&](Window& w, double d_lo, double d_hi, int other, Window* right) {
     int first = 0, last = n - 2;
