@@ -154,6 +154,11 @@ inline double distance_to_apex(const Window& w, double crossing, double cx, doub
 /// |x - s1| = |x - s0| + delta; squaring once gives alpha x + beta = 2 delta |x - s0|, and a
 /// second time a quadratic. A root of the quadratic is kept only if it solves the first
 /// equation too: squaring adds spurious roots.
+// Out of line: called for a third of the pairs only, and inlined it made `compare_on_overlap`
+// too large to be inlined where the other two thirds are decided.
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
 inline int equal_distance_points(const Window_geometry& w0, const Window_geometry& w1, double lo, double hi, double roots[2])
 {
   const double delta = w0.sigma - w1.sigma;
@@ -234,6 +239,13 @@ inline int compare_on_overlap(const Window_geometry& w0, const Window_geometry& 
   }
   int n = 1 + equal_distance_points(w0, w1, lo, hi, cut + 1);
   cut[n++] = hi;
+  // One point of equal distance between ends where f has opposite signs: the ends tell the
+  // winners, with no distance evaluated.
+  if(n == 3 && ((f_lo > 0 && f_hi < 0) || (f_lo < 0 && f_hi > 0))) {
+    winner[0] = f_lo < 0 ? 1 : 0;
+    winner[1] = f_hi < 0 ? 1 : 0;
+    return n;
+  }
   // Winner of each piece between consecutive cut points. On a tie w0 wins: two different
   // straight paths of equal length meeting on the edge cannot both continue as shortest paths.
   for(int i = 0; i + 1 < n; ++i) {
