@@ -678,8 +678,7 @@ private:
         if(outcome & 2)
           wj.b1 = wj.b0;
         if(outcome & 4) {
-          auto at = std::upper_bound(windows.begin() + std::ptrdiff_t(j) + 1, windows.end(), right,
-                                     [](const Window& a, const Window& b) { return a.b0 < b.b0; });
+          auto at = std::upper_bound(windows.begin() + std::ptrdiff_t(j) + 1, windows.end(), right, starts_before);
           windows.insert(at, right);
           w = windows.data();
           n = windows.size();
@@ -690,12 +689,14 @@ private:
                   windows.end());
   }
 
+  // The order of a list's windows: by where they start.
+  static bool starts_before(const Window& a, const Window& b) { return a.b0 < b.b0; }
+
   // Sorts a list's windows by where they start. A list is a few chains of children, each in
   // the order of its parent list, that overlap little: an insertion sort moves few windows. Past
   // a budget of moves (lists of many interleaved chains), the list is sorted the general way.
   static void sort_by_start(std::vector<Window>& windows)
   {
-    auto starts_before = [](const Window& a, const Window& b) { return a.b0 < b.b0; };
     const std::size_t n = windows.size();
     std::size_t moves_left = max_moves_per_window * n;
     for(std::size_t i = 1; i < n; ++i) {

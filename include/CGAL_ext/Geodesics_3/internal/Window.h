@@ -318,11 +318,12 @@ inline int clip_pair(Window& w0, Window& w1, Window* split = nullptr)
     if(right && w.b0 < lo && w.b1 > hi)
       for(int k = n - 2; k >= 0; --k)
         if(winner[k] == other) {
+          // the distances at the overlap's ends are known
           *right = w;
           right->b0 = cut[k + 1];
-          right->d0 = distance_at(w, right->b0);
+          right->d0 = right->b0 == hi ? d_hi : distance_at(w, right->b0);
           w.b1 = cut[k];
-          w.d1 = distance_at(w, w.b1);
+          w.d1 = w.b1 == lo ? d_lo : distance_at(w, w.b1);
           return 2;
         }
     return 0;
