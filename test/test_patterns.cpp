@@ -8,6 +8,8 @@
 #include <CGAL_ext/detect_repetitive_patterns.h>
 #include <CGAL_ext/geodesic_distance_matrix.h>
 
+#include <CGAL/Eigen_svd.h>
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -212,6 +214,44 @@ TEST(Pattern_steps, Embedding_separates_two_planted_consistent_groups)
       ++pure;
   }
   EXPECT_EQ(pure, 2u) << clusters.size() << " clusters";
+}
+
+TEST(Pattern_steps, Curvatures_solved_by_QR_agree_with_CGALs_SVD_and_a_cylinder)
+{
+  // a noisy bump on a plane: flat, convex, concave and saddle points, and round-off in the rings
+  Planted b;
+  b.x = b.y = 0.5;
+  b.radius = 0.2;
+  Mesh m = bumpy_plane(41, 1.0 / 40, {b}, 0.4);
+  add_noise(m, 0.002, 7);
+  const auto vpm = get(CGAL::vertex_point, m);
+  const auto vim = get(CGAL::vertex_index, m);
+  const auto ours = internal::vertex_principal_curvatures(m, vpm, vim, false);
+  const auto svd =
+    internal::vertex_principal_curvatures<Mesh, decltype(vpm), decltype(vim), CGAL::Eigen_svd>(m, vpm, vim, false);
+  double largest = 0, worst = 0;
+  for(std::size_t i = 0; i < svd.size(); ++i) {
+    largest = std::max({largest, std::abs(svd[i].k_max), std::abs(svd[i].k_min)});
+    worst = std::max({worst, std::abs(ours[i].k_max - svd[i].k_max), std::abs(ours[i].k_min - svd[i].k_min)});
+  }
+  EXPECT_GT(largest, 1.0);
+  EXPECT_LT(worst, 1e-9 * largest);
+
+  // a cylinder of radius 1: curvatures 1 around it and 0 along it, away from its open ends
+  const Mesh tube = make_cylinder(1.0, 48, 2.0, 24);
+  const auto k = internal::vertex_principal_curvatures(tube, get(CGAL::vertex_point, tube),
+                                                       get(CGAL::vertex_index, tube), false);
+  std::size_t checked = 0;
+  for(Vertex v : tube.vertices()) {
+    const double z = tube.point(v).z();
+    if(z < 0.5 || z > 1.5)
+      continue;
+    const auto& c = k[std::size_t(v)];
+    EXPECT_NEAR(std::max(std::abs(c.k_max), std::abs(c.k_min)), 1.0, 0.02);
+    EXPECT_LT(std::min(std::abs(c.k_max), std::abs(c.k_min)), 0.02);
+    ++checked;
+  }
+  EXPECT_GT(checked, 400u);
 }
 
 TEST(Pattern_steps, Signatures_are_equal_on_congruent_patches)

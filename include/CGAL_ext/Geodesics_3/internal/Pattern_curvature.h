@@ -7,6 +7,8 @@
 
 #include <CGAL_ext/Geodesics_3/internal/Parallel_for.h>
 
+#include <CGAL/Eigen_matrix.h>
+#include <CGAL/Eigen_vector.h>
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/Monge_via_jet_fitting.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
@@ -17,6 +19,8 @@
 #include <cmath>
 #include <cstddef>
 #include <vector>
+
+#include <Eigen/QR>
 
 namespace CGAL_ext {
 namespace Geodesics_3 {
@@ -30,9 +34,31 @@ struct Principal_curvatures
   double k_min = 0;
 };
 
+/// The least-squares solver of the jet fitting (a model of CGAL's `SvdTraits`, in place of
+/// `CGAL::Eigen_svd`, whose singular value decomposition with both factors took most of the
+/// fitting's time): a QR decomposition with column pivoting, as accurate on the fitting's tall
+/// systems (CGAL preconditions them) and rank-revealing for degenerate ones. The condition number
+/// returned is the pivoted QR's estimate, the ratio of the largest to the smallest diagonal
+/// entry of its triangular factor (the fitting only reports it).
+struct Jet_least_squares
+{
+  typedef double FT;
+  typedef CGAL::Eigen_vector<FT> Vector;
+  typedef CGAL::Eigen_matrix<FT> Matrix;
+
+  static FT solve(const Matrix& M, Vector& B)
+  {
+    const Eigen::ColPivHouseholderQR<Matrix::EigenType> qr(M.eigen_object());
+    B.eigen_object() = qr.solve(Vector::EigenType(B.eigen_object()));
+    const auto diagonal = qr.matrixQR().diagonal().cwiseAbs();
+    return diagonal.maxCoeff() / diagonal.minCoeff();
+  }
+};
+
 /// Fits a degree-2 jet to each vertex and the rings around it (as many rings as bring at least
 /// `min_points` points, at most `max_rings`), oriented by the vertex normal. By vertex index.
-template <class TriangleMesh, class VertexPointMap, class VertexIndexMap>
+/// `LeastSquares`: the fitting's `SvdTraits`.
+template <class TriangleMesh, class VertexPointMap, class VertexIndexMap, class LeastSquares = Jet_least_squares>
 std::vector<Principal_curvatures> vertex_principal_curvatures(const TriangleMesh& tm, VertexPointMap vpm,
                                                              VertexIndexMap vim, bool parallel,
                                                              std::size_t min_points = 16, int max_rings = 4)
@@ -41,7 +67,7 @@ std::vector<Principal_curvatures> vertex_principal_curvatures(const TriangleMesh
   typedef typename GT::vertex_descriptor vertex_descriptor;
   typedef typename boost::property_traits<VertexPointMap>::value_type Point_3;
   typedef typename CGAL::Kernel_traits<Point_3>::Kernel Kernel;
-  typedef CGAL::Monge_via_jet_fitting<Kernel> Fitting;
+  typedef CGAL::Monge_via_jet_fitting<Kernel, CGAL::Simple_cartesian<double>, LeastSquares> Fitting;
 
   std::vector<vertex_descriptor> vertex_of_index(num_vertices(tm));
   for(vertex_descriptor v : vertices(tm))
