@@ -81,7 +81,7 @@ int main(int argc, char** argv)
       const double r = scene.truth.radii[nearest];
       const auto d = instance.center - scene.truth.centres[nearest];
       std::cerr << "planted " << nearest << " offset/radius " << std::sqrt(d.squared_length()) / r << " (" << d.x() / r
-                << ", " << d.y() / r << ", " << d.z() / r << ") energy " << instance.energy << "\n";
+                << ", " << d.y() / r << ", " << d.z() / r << ") energy " << instance.energy << " along " << (scene.truth.angles.empty() ? 0.0 : (d.x()*std::cos(scene.truth.angles[nearest]) + d.y()*std::sin(scene.truth.angles[nearest]))/r) << " across " << (scene.truth.angles.empty() ? 0.0 : (-d.x()*std::sin(scene.truth.angles[nearest]) + d.y()*std::cos(scene.truth.angles[nearest]))/r) << "\n";
     }
   const auto& st = found.statistics;
   std::cout.precision(3);

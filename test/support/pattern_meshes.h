@@ -189,6 +189,7 @@ struct Truth
 {
   std::vector<Point> centres;
   std::vector<double> radii;
+  std::vector<double> angles;
 
   /// The planted instance whose centre is nearest to `p`.
   std::size_t nearest(const Point& p) const
@@ -271,6 +272,7 @@ inline Pattern_scene bumps_on_a_plane(int n, const std::vector<Planted>& bumps, 
   for(const Planted& b : bumps) {
     scene.truth.centres.push_back(Point(b.x, b.y, height * b.radius));
     scene.truth.radii.push_back(b.radius);
+    scene.truth.angles.push_back(b.angle);
   }
   scene.patch_centre = nearest_vertex(scene.mesh, scene.truth.centres[0]);
   scene.patch_radius = bumps[0].radius;

@@ -1009,14 +1009,18 @@ private:
   // the one whose own signature is most like the patch centre's and whose distances to the
   // images of the patch samples best agree with the patch centre's distances to them (the root
   // mean square of the differences over the images within a row, relative to the patch's
-  // size): the signature alone hardly changes along the axis of an elongated instance, the
-  // distances alone are off by up to a spacing each. One `descend` for all instances: a row
-  // gives both the signature and the distances.
+  // size), and whose disk's curvature moment (`curvature_moment`) is the patch centre's: the
+  // signature alone hardly changes along the axis of an elongated instance, the distances alone
+  // are off by up to a spacing each. One `descend` for all instances: a row gives the signature,
+  // the moment and the distances.
   void place_centres()
   {
     // the signature term weighs more than the distances: the images the distances are measured
     // to are samples, each up to a spacing off (the weight's sweep: doc/experiments.md)
     constexpr double centre_signature_weight = 4;
+    // the moment's weight (its sweep: doc/experiments.md); the moment is a small number (an
+    // offset over the radius)
+    constexpr double centre_moment_weight = 30;
     const std::size_t n = m_instances.size();
     const std::size_t k = m_patch_sample.size();
     if(n < 2)
@@ -1024,6 +1028,11 @@ private:
     const int rings = m_settings.signature_rings;
     const double signature_radius = m_settings.signature_radius * m_size;
     const std::vector<double>& target = m_patch_signature[m_landmark];
+    const std::size_t patch_centre = m_sample_vertex[m_patch_sample[m_landmark]];
+    double target_moment = 0;
+    for_each_local_row({patch_centre}, signature_radius, [&](std::size_t, const Row& entries) {
+      target_moment = curvature_moment(patch_centre, entries, signature_radius);
+    });
     // the images as far as the patch's farthest samples, with a spacing to spare (for an
     // elongated patch, those along its axis, beyond the signature's disk, tell the most)
     const double reach = std::max(signature_radius, m_radius + m_spacing) * m_scales.back();
@@ -1034,7 +1043,7 @@ private:
                                 std::make_pair(v, -std::numeric_limits<double>::infinity()),
                                 [](const auto& x, const auto& y) { return x.first < y.first; });
     };
-    const auto cost = [&](std::size_t a, const Row& entries) {
+    const auto cost = [&](std::size_t a, std::size_t centre, const Row& entries) {
       const Instance& instance = m_instances[a];
       const double scale = m_scales[instance.scale_step];
       if(allowed[a].empty()) // the first row of the instance: its start's
@@ -1061,7 +1070,8 @@ private:
         ++counted;
       }
       return centre_signature_weight * signature_distance(target, sums.signature(radius, rings)) / m_signature_norm +
-             (counted ? std::sqrt(squares / double(counted)) / (m_size * scale) : 0.0);
+             (counted ? std::sqrt(squares / double(counted)) / (m_size * scale) : 0.0) +
+             centre_moment_weight * std::abs(curvature_moment(centre, entries, radius) - target_moment);
     };
     // the walkers are the instances but the patch: walker w is instance w + 1
     std::vector<std::size_t> start;
@@ -1084,12 +1094,35 @@ private:
     };
     const auto placed = descend(
       start, reach, add_stops,
-      [&](std::size_t w, std::size_t, const Row& entries) { return cost(w + 1, entries); },
+      [&](std::size_t w, std::size_t v, const Row& entries) { return cost(w + 1, v, entries); },
       [&](std::size_t w, std::size_t v) { return is_allowed(w + 1, v); }, max_steps);
     for(std::size_t a = 1; a < n; ++a) {
       m_instances[a].center_vertex = placed[a - 1].first;
       m_instances[a].center_cost = placed[a - 1].second;
     }
+  }
+
+  // The curvature moment of the disk of `radius` around vertex `centre` (`entries`: a row from
+  // it): the length of the mean offset of the disk's vertices from the centre, each weighted by
+  // its area and its absolute curvatures, over the radius. Rings of distance around the centre
+  // (the signature) hardly change as the centre slides along an elongated instance; the side
+  // where the curvature lies does.
+  double curvature_moment(std::size_t centre, const Row& entries, double radius) const
+  {
+    const auto c = get(m_vpm, m_vertex[centre]);
+    double moment[3] = {0, 0, 0}, weight = 0;
+    for(const auto& [u, d] : entries) {
+      if(!(d < radius))
+        continue;
+      const double w = m_area[u] * (std::abs(m_curvature[u].k_max) + std::abs(m_curvature[u].k_min));
+      const auto offset = get(m_vpm, m_vertex[u]) - c;
+      moment[0] += w * CGAL::to_double(offset.x());
+      moment[1] += w * CGAL::to_double(offset.y());
+      moment[2] += w * CGAL::to_double(offset.z());
+      weight += w;
+    }
+    return weight > 0 ? std::sqrt(moment[0] * moment[0] + moment[1] * moment[1] + moment[2] * moment[2]) / (weight * radius)
+                      : 0.0;
   }
 
   // Instances are accepted apart (each centre farther than the mean of the two sizes from every
