@@ -81,7 +81,13 @@ int main(int argc, char** argv)
       const double r = scene.truth.radii[nearest];
       const auto d = instance.center - scene.truth.centres[nearest];
       std::cerr << "planted " << nearest << " offset/radius " << std::sqrt(d.squared_length()) / r << " (" << d.x() / r
-                << ", " << d.y() / r << ", " << d.z() / r << ") energy " << instance.energy << " along " << (scene.truth.angles.empty() ? 0.0 : (d.x()*std::cos(scene.truth.angles[nearest]) + d.y()*std::sin(scene.truth.angles[nearest]))/r) << " across " << (scene.truth.angles.empty() ? 0.0 : (-d.x()*std::sin(scene.truth.angles[nearest]) + d.y()*std::cos(scene.truth.angles[nearest]))/r) << "\n";
+                << ", " << d.y() / r << ", " << d.z() / r << ") energy " << instance.energy;
+      if(!scene.truth.angles.empty()) { // on a plane: the offset along and across the instance's long axis
+        const double a = scene.truth.angles[nearest];
+        std::cerr << " along " << (d.x() * std::cos(a) + d.y() * std::sin(a)) / r << " across "
+                  << (-d.x() * std::sin(a) + d.y() * std::cos(a)) / r;
+      }
+      std::cerr << "\n";
     }
   const auto& st = found.statistics;
   std::cout.precision(3);

@@ -189,7 +189,7 @@ struct Truth
 {
   std::vector<Point> centres;
   std::vector<double> radii;
-  std::vector<double> angles;
+  std::vector<double> angles; ///< of the long axes, on a plane (empty elsewhere)
 
   /// The planted instance whose centre is nearest to `p`.
   std::size_t nearest(const Point& p) const

@@ -8,10 +8,12 @@
 #include <CGAL_ext/Geodesics_3/internal/Parallel_for.h>
 
 #include <CGAL/Eigen_matrix.h>
+#include <CGAL/Eigen_svd.h>
 #include <CGAL/Eigen_vector.h>
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/Monge_via_jet_fitting.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/Simple_cartesian.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 
@@ -36,10 +38,11 @@ struct Principal_curvatures
 
 /// The least-squares solver of the jet fitting (a model of CGAL's `SvdTraits`, in place of
 /// `CGAL::Eigen_svd`, whose singular value decomposition with both factors took most of the
-/// fitting's time): a QR decomposition with column pivoting, as accurate on the fitting's tall
-/// systems (CGAL preconditions them) and rank-revealing for degenerate ones. The condition number
-/// returned is the pivoted QR's estimate, the ratio of the largest to the smallest diagonal
-/// entry of its triangular factor (the fitting only reports it).
+/// fitting's time): a QR decomposition with column pivoting, as accurate on the fitting's tall,
+/// full-rank systems (CGAL preconditions them). A system the pivoting finds rank-deficient (a
+/// degenerate neighbourhood) goes to `Eigen_svd`, whose minimum-norm solution stays bounded. The
+/// condition number returned on the QR's path is the ratio of the largest to the smallest
+/// diagonal entry of its triangular factor, a lower bound of it (the fitting only reports it).
 struct Jet_least_squares
 {
   typedef double FT;
@@ -49,6 +52,8 @@ struct Jet_least_squares
   static FT solve(const Matrix& M, Vector& B)
   {
     const Eigen::ColPivHouseholderQR<Matrix::EigenType> qr(M.eigen_object());
+    if(qr.rank() < M.eigen_object().cols())
+      return CGAL::Eigen_svd::solve(M, B);
     B.eigen_object() = qr.solve(Vector::EigenType(B.eigen_object()));
     const auto diagonal = qr.matrixQR().diagonal().cwiseAbs();
     return diagonal.maxCoeff() / diagonal.minCoeff();

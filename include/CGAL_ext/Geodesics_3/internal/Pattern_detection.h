@@ -1029,10 +1029,8 @@ private:
     const double signature_radius = m_settings.signature_radius * m_size;
     const std::vector<double>& target = m_patch_signature[m_landmark];
     const std::size_t patch_centre = m_sample_vertex[m_patch_sample[m_landmark]];
-    double target_moment = 0;
-    for_each_local_row({patch_centre}, signature_radius, [&](std::size_t, const Row& entries) {
-      target_moment = curvature_moment(patch_centre, entries, signature_radius);
-    });
+    const double target_moment =
+      curvature_moment(patch_centre, local_row(patch_centre, signature_radius), signature_radius);
     // the images as far as the patch's farthest samples, with a spacing to spare (for an
     // elongated patch, those along its axis, beyond the signature's disk, tell the most)
     const double reach = std::max(signature_radius, m_radius + m_spacing) * m_scales.back();
