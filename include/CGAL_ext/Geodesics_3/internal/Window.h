@@ -227,16 +227,13 @@ inline int compare_on_overlap(const Window_geometry& w0, const Window_geometry& 
   // pseudo-sources meets the edge (where f' = 0: the rays from both to a point of the edge have
   // the same direction only there). On an overlap that does not hold that point, f has one sign
   // throughout when it has that sign at an end and not the other at the other end.
-  // (That sign at an end and not the other at the other end: both ends >= 0 or both <= 0, not
-  // both zero, and no NaN; tested without short circuits, one branch rather than up to eight.)
   const double f_lo = lo1 - lo0, f_hi = hi1 - hi0;
-  const bool nonnegative = (f_lo >= 0) & (f_hi >= 0), nonpositive = (f_lo <= 0) & (f_hi <= 0);
-  if(nonnegative != nonpositive) {
+  if((f_lo > 0 && f_hi >= 0) || (f_lo >= 0 && f_hi > 0) || (f_lo < 0 && f_hi <= 0) || (f_lo <= 0 && f_hi < 0)) {
     const double dx = w1.sx - w0.sx, dy = w1.sy - w0.sy;
     const double side_lo = dy * (lo - w0.sx) + dx * w0.sy, side_hi = dy * (hi - w0.sx) + dx * w0.sy;
     if(!(side_lo * side_hi < 0)) {
       cut[1] = hi;
-      winner[0] = nonpositive ? 1 : 0;
+      winner[0] = (f_lo < 0 || f_hi < 0) ? 1 : 0;
       return 2;
     }
   }
