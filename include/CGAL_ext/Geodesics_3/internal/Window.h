@@ -70,18 +70,13 @@ inline double window_key(const Window_geometry& w)
   return w.sigma - w.sy;
 }
 
-/// The filter of Xin and Wang (thesis eqs 4.1-4.2), made exact: the part of the window where
-/// the path through an end vertex of its edge is shorter is cut off. Along the edge,
-/// D(x) - x is non-increasing and D(x) + x non-decreasing, so the part beaten by the source
-/// vertex of the half-edge is an initial segment and the part beaten by its target a final one.
-/// `d_from`/`d_to` are the current distances of the source/target vertex of the half-edge.
-/// `at_b0`/`at_b1` are the distances at the ends of the window, updated with them.
-/// Returns false when nothing is left; otherwise `key` is the window's smallest distance.
-inline bool trim_by_edge_vertices(Window_geometry& w, double& at_b0, double& at_b1, double length, double d_from,
-                                  double d_to, double& key)
+/// The cuts of `trim_by_edge_vertices`, apart: most windows need none.
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
+inline void cut_by_edge_vertices(Window_geometry& w, double& at_b0, double& at_b1, double length, double d_from,
+                                 double d_to)
 {
-  if(at_b1 - w.b1 > d_from || at_b0 + w.b0 > d_to + length)
-    return false;
   if(at_b0 - w.b0 > d_from) {
     // sigma + |s - x| = d_from + x
     const double r2 = w.sx * w.sx + w.sy * w.sy;
@@ -102,6 +97,22 @@ inline bool trim_by_edge_vertices(Window_geometry& w, double& at_b0, double& at_
       at_b1 = distance_at(w, w.b1);
     }
   }
+}
+
+/// The filter of Xin and Wang (thesis eqs 4.1-4.2), made exact: the part of the window where
+/// the path through an end vertex of its edge is shorter is cut off. Along the edge,
+/// D(x) - x is non-increasing and D(x) + x non-decreasing, so the part beaten by the source
+/// vertex of the half-edge is an initial segment and the part beaten by its target a final one.
+/// `d_from`/`d_to` are the current distances of the source/target vertex of the half-edge.
+/// `at_b0`/`at_b1` are the distances at the ends of the window, updated with them.
+/// Returns false when nothing is left; otherwise `key` is the window's smallest distance.
+inline bool trim_by_edge_vertices(Window_geometry& w, double& at_b0, double& at_b1, double length, double d_from,
+                                  double d_to, double& key)
+{
+  if(at_b1 - w.b1 > d_from || at_b0 + w.b0 > d_to + length)
+    return false;
+  if(at_b0 - w.b0 > d_from || at_b1 + w.b1 > d_to + length)
+    cut_by_edge_vertices(w, at_b0, at_b1, length, d_from, d_to);
   key = (w.sx > w.b0 && w.sx < w.b1) ? w.sigma - w.sy : std::min(at_b0, at_b1);
   return w.b1 > w.b0;
 }
