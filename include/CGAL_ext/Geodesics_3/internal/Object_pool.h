@@ -65,7 +65,7 @@ template <class T>
 class Object_pool : public Pool_slots<Object_pool_slot<T>>
 {
 public:
-  /// An object of the slot, as it was left when freed (value-initialized when new).
+  /// An object of the slot, as it was left when freed (default-initialized when new).
   T* allocate(std::size_t slot)
   {
     auto& s = this->m_slots[slot];
@@ -76,7 +76,8 @@ public:
       return p;
     }
     if(s.used == block_size) {
-      s.blocks.push_back(std::make_unique<T[]>(block_size));
+      // default-initialized, not zeroed: a window is written whole when it is made
+      s.blocks.push_back(std::unique_ptr<T[]>(new T[block_size]));
       s.used = 0;
     }
     return &s.blocks.back()[s.used++];

@@ -633,7 +633,7 @@ private:
     for(const Window& w : windows) {
       const double crossing = apex_crossing(w, f.apex_x, f.apex_y);
       make_children(w, across, std::min(split, crossing), std::max(split, crossing), m_min_window_length,
-                    [&](int g, const Window_geometry& geometry, bool onto_ac) __attribute__((always_inline)) {
+                    [&](int g, const Window_geometry& geometry, bool onto_ac) CGAL_EXT_ALWAYS_INLINE {
                       Window child = list_window(geometry, w.source);
                       // A -> C runs from the source of h to the apex, C -> B from the apex to the target
                       if(onto_ac ? keep_window(child, g, d_from, d_apex) : keep_window(child, g, d_apex, d_to))

@@ -12,6 +12,15 @@
 #include <memory>
 #include <vector>
 
+// Where the compiler's own choice of what to inline was measured worse (callgrind, doc/experiments.md).
+#if defined(__GNUC__)
+#define CGAL_EXT_NOINLINE __attribute__((noinline))
+#define CGAL_EXT_ALWAYS_INLINE __attribute__((always_inline))
+#else
+#define CGAL_EXT_NOINLINE
+#define CGAL_EXT_ALWAYS_INLINE
+#endif
+
 namespace CGAL_ext {
 namespace Geodesics_3 {
 namespace internal {
@@ -71,10 +80,7 @@ inline double window_key(const Window_geometry& w)
 }
 
 /// The cuts of `trim_by_edge_vertices`, apart: most windows need none.
-#if defined(__GNUC__)
-__attribute__((noinline))
-#endif
-inline void cut_by_edge_vertices(Window_geometry& w, double& at_b0, double& at_b1, double length, double d_from,
+CGAL_EXT_NOINLINE inline void cut_by_edge_vertices(Window_geometry& w, double& at_b0, double& at_b1, double length, double d_from,
                                  double d_to)
 {
   if(at_b0 - w.b0 > d_from) {
@@ -167,10 +173,7 @@ inline double distance_to_apex(const Window& w, double crossing, double cx, doub
 /// equation too: squaring adds spurious roots.
 // Out of line: called for a third of the pairs only, and inlined it made `compare_on_overlap`
 // too large to be inlined where the other two thirds are decided.
-#if defined(__GNUC__)
-__attribute__((noinline))
-#endif
-inline int equal_distance_points(const Window_geometry& w0, const Window_geometry& w1, double lo, double hi, double roots[2])
+CGAL_EXT_NOINLINE inline int equal_distance_points(const Window_geometry& w0, const Window_geometry& w1, double lo, double hi, double roots[2])
 {
   const double delta = w0.sigma - w1.sigma;
   const double alpha = 2 * (w0.sx - w1.sx);
