@@ -4,6 +4,7 @@
 
 #include <CGAL_ext/Geodesics_3/Geodesic_error.h>
 #include <CGAL_ext/Geodesics_3/Tolerances.h>
+#include <CGAL_ext/Geodesics_3/internal/Inlining.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -155,7 +156,7 @@ struct Mesh_cache
   /// two are that triangle seen from another side, which costs a division here but saves two
   /// thirds of the memory that frames per half-edge would take. (A removed face keeps the
   /// values of the mesh as given; nothing asks for its frames.)
-  Halfedge_frame frame(int h) const
+  CGAL_EXT_ALWAYS_INLINE Halfedge_frame frame(int h) const
   {
     const std::array<double, 2>& c = first_apex[std::size_t(face(h))];
     const double len = halfedge_length[std::size_t(h)];

@@ -3,6 +3,7 @@
 #define CGAL_EXT_GEODESICS_3_INTERNAL_WINDOW_H
 
 #include <CGAL_ext/Geodesics_3/Tolerances.h>
+#include <CGAL_ext/Geodesics_3/internal/Inlining.h>
 #include <CGAL_ext/Geodesics_3/internal/Mesh_cache.h>
 
 #include <algorithm>
@@ -12,13 +13,8 @@
 #include <memory>
 #include <vector>
 
-// Where the compiler's own choice of what to inline was measured worse (callgrind, doc/experiments.md).
-#if defined(__GNUC__)
-#define CGAL_EXT_NOINLINE __attribute__((noinline))
-#define CGAL_EXT_ALWAYS_INLINE __attribute__((always_inline))
-#else
-#define CGAL_EXT_NOINLINE
-#define CGAL_EXT_ALWAYS_INLINE
+#if defined(__SSE2__)
+#include <emmintrin.h>
 #endif
 
 namespace CGAL_ext {
@@ -52,9 +48,22 @@ struct Window : Window_geometry
 };
 static_assert(sizeof(Window) == 64, "a list window is one cache line");
 
+/// The square root, correctly rounded as std::sqrt, without the test and library call that set
+/// `errno` for a negative argument (compilers keep them unless told `-fno-math-errno`; the
+/// kernel takes about ten square roots a window). A negative argument gives NaN either way.
+inline double square_root(double x)
+{
+#if defined(__SSE2__)
+  const __m128d v = _mm_set_sd(x);
+  return _mm_cvtsd_f64(_mm_sqrt_sd(v, v));
+#else
+  return std::sqrt(x);
+#endif
+}
+
 /// Planar length of (x, y). std::hypot guards against overflow at a large cost; coordinates of
 /// a mesh are far from that range.
-inline double norm2d(double x, double y) { return std::sqrt(x * x + y * y); }
+inline double norm2d(double x, double y) { return square_root(x * x + y * y); }
 
 inline double distance_at(const Window_geometry& w, double x) { return w.sigma + norm2d(x - w.sx, w.sy); }
 
@@ -204,7 +213,7 @@ CGAL_EXT_NOINLINE inline int equal_distance_points(const Window_geometry& w0, co
   if(disc < 0)
     return 0;
   // the numerically stable pair of roots
-  const double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
+  const double q = -0.5 * (b + std::copysign(square_root(disc), b));
   double r0 = q / a, r1 = q != 0 ? c / q : r0;
   if(r0 > r1)
     std::swap(r0, r1);
@@ -405,7 +414,7 @@ inline Face_crossing face_crossing(const Mesh_cache& m, int h, const Halfedge_fr
 /// those through [max(b0, cb_start), b1] onto C -> B. `add(halfedge, child, onto_ac)` receives
 /// each child at least `min_length` long, in the frame of the half-edge beyond.
 template <class Add>
-void make_children(const Window_geometry& w, const Face_crossing& c, double ac_end, double cb_start,
+CGAL_EXT_ALWAYS_INLINE inline void make_children(const Window_geometry& w, const Face_crossing& c, double ac_end, double cb_start,
                    double min_length, Add add)
 {
   Window_geometry child;
