@@ -25,7 +25,7 @@ PHASES = [
                           'note_live_windows', 'for_each_outgoing', 'emit_', 'run()', 'Min_heap', 'take_vertices',
                           'flush_waiting', 'limit()', 'reset_wavefront', 'update_stop']),
 ]
-HELPERS = ('allocator_traits', 'norm2d', 'distance_at(', ' std::max<', ' std::min<', 'std::abs', 'std::sqrt',
+HELPERS = ('allocator_traits', 'norm2d', 'square_root', '_mm_', 'distance_at(', ' std::max<', ' std::min<', 'std::abs', 'std::sqrt',
            'std::copysign', 'std::isfinite', 'std::vector<', '__new_allocator', '__normal_iterator',
            'Mesh_cache::', 'std::operator<', 'std::__and_', 'std::swap', 'std::move', 'std::pair<', 'enable_if',
            '__gnu_cxx::operator', '__ops::')
