@@ -21,11 +21,12 @@ namespace internal {
 struct alignas(64) Edge_window // one cache line
 {
   Window_geometry geometry;
-  int halfedge;          // the half-edge whose face the window's rays enter
-  int source;            // the source its paths start from (index in the order sources were added)
-  std::uint32_t version = 0; // changes when the window is freed (and, with requeue_trimmed, clipped): older entries are stale
-  std::uint8_t queued;   // waits to be propagated
-  Edge_window* next;     // the next window of the edge (sorted by b0), or of the pool's free list
+  int halfedge;              // the half-edge whose face the window's rays enter
+  int source;                // the source its paths start from (index in the order sources were added)
+  std::uint32_t version = 0; // changes when the window is freed (and, with requeue_trimmed, clipped): older entries
+                             // are stale; the one member a new block initializes (Object_pool)
+  std::uint8_t queued;       // waits to be propagated
+  Edge_window* next;         // the next window of the edge (sorted by b0), or of the pool's free list
 };
 
 /// A distance found for a vertex, applied after a parallel step.

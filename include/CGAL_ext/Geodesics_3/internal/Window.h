@@ -88,9 +88,9 @@ inline double window_key(const Window_geometry& w)
   return w.sigma - w.sy;
 }
 
-/// The cuts of `trim_by_edge_vertices`, apart: most windows need none.
-CGAL_EXT_NOINLINE inline void cut_by_edge_vertices(Window_geometry& w, double& at_b0, double& at_b1, double length, double d_from,
-                                 double d_to)
+/// The cuts of `trim_by_edge_vertices`, out of line: most windows need none.
+CGAL_EXT_NOINLINE inline void cut_by_edge_vertices(Window_geometry& w, double& at_b0, double& at_b1, double length,
+                                                   double d_from, double d_to)
 {
   if(at_b0 - w.b0 > d_from) {
     // sigma + |s - x| = d_from + x
@@ -182,7 +182,8 @@ inline double distance_to_apex(const Window& w, double crossing, double cx, doub
 /// equation too: squaring adds spurious roots.
 // Out of line: called for a third of the pairs only, and inlined it made `compare_on_overlap`
 // too large to be inlined where the other two thirds are decided.
-CGAL_EXT_NOINLINE inline int equal_distance_points(const Window_geometry& w0, const Window_geometry& w1, double lo, double hi, double roots[2])
+CGAL_EXT_NOINLINE inline int equal_distance_points(const Window_geometry& w0, const Window_geometry& w1, double lo,
+                                                   double hi, double roots[2])
 {
   const double delta = w0.sigma - w1.sigma;
   const double alpha = 2 * (w0.sx - w1.sx);
@@ -414,8 +415,8 @@ inline Face_crossing face_crossing(const Mesh_cache& m, int h, const Halfedge_fr
 /// those through [max(b0, cb_start), b1] onto C -> B. `add(halfedge, child, onto_ac)` receives
 /// each child at least `min_length` long, in the frame of the half-edge beyond.
 template <class Add>
-CGAL_EXT_ALWAYS_INLINE inline void make_children(const Window_geometry& w, const Face_crossing& c, double ac_end, double cb_start,
-                   double min_length, Add add)
+CGAL_EXT_ALWAYS_INLINE inline void make_children(const Window_geometry& w, const Face_crossing& c, double ac_end,
+                                                 double cb_start, double min_length, Add add)
 {
   Window_geometry child;
   if(c.to_ac >= 0) {
