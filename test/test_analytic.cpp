@@ -6,11 +6,14 @@
 #include "support/checks.h"
 #include "support/solve.h"
 
+#include <CGAL_ext/Geodesics_3/internal/Edge_window_store.h>
 #include <CGAL_ext/Geodesics_3/internal/Object_pool.h>
 #include <CGAL_ext/Geodesics_3/internal/Window.h>
 
 #include <cmath>
 #include <cstdint>
+#include <cstring>
+#include <limits>
 #include <optional>
 #include <random>
 #include <string>
@@ -360,6 +363,58 @@ TEST(WindowToolkit, IndexedPoolKeepsObjectsByIndex)
   EXPECT_EQ(pool.bytes(), 4 * Pool::block_size * sizeof(gi::Window));
   for(std::size_t i = 1; i < n; i += 2)
     EXPECT_EQ(pool[index[i]].source, int(i)) << "objects not freed are untouched";
+}
+
+// The kernels' square root is std::sqrt's correctly rounded value, bit for bit, from denormals
+// to the largest doubles; a negative argument gives NaN as std::sqrt does.
+TEST(WindowToolkit, SquareRootIsStdSqrtBitForBit)
+{
+  namespace gi = CGAL_ext::Geodesics_3::internal;
+  const auto bits = [](double x) {
+    std::uint64_t b;
+    std::memcpy(&b, &x, sizeof b);
+    return b;
+  };
+  std::vector<double> values{0.,
+                             -0.,
+                             1.,
+                             2.,
+                             std::numeric_limits<double>::denorm_min(),
+                             std::numeric_limits<double>::min(),
+                             std::numeric_limits<double>::max(),
+                             std::numeric_limits<double>::infinity()};
+  std::mt19937_64 random(12);
+  std::uniform_real_distribution<double> mantissa(1., 2.);
+  std::uniform_int_distribution<int> exponent(-1070, 1020);
+  for(int i = 0; i < 100000; ++i)
+    values.push_back(std::ldexp(mantissa(random), exponent(random)));
+  for(double x : values)
+    ASSERT_EQ(bits(gi::square_root(x)), bits(std::sqrt(x))) << "x = " << x;
+  EXPECT_TRUE(std::isnan(gi::square_root(-1.)));
+  EXPECT_TRUE(std::isnan(gi::square_root(std::numeric_limits<double>::quiet_NaN())));
+}
+
+// MMP's window store: a new block's windows start at version 0 (the blocks are not zeroed, the
+// version alone is initialized), and a freed window comes back first with the version it had.
+TEST(WindowToolkit, ObjectPoolNewWindowsStartAtVersionZero)
+{
+  namespace gi = CGAL_ext::Geodesics_3::internal;
+  gi::Object_pool<gi::Edge_window> pool;
+  const std::size_t n = 2 * gi::Object_pool_slot<gi::Edge_window>::block_size + 3;
+  std::vector<gi::Edge_window*> made;
+  for(std::size_t i = 0; i < n; ++i) {
+    gi::Edge_window* w = pool.allocate(0);
+    ASSERT_EQ(w->version, 0u) << "window " << i;
+    EXPECT_EQ(reinterpret_cast<std::uintptr_t>(w) % 64, 0u);
+    w->version = std::uint32_t(i + 7);
+    made.push_back(w);
+  }
+  EXPECT_EQ(pool.live(), n);
+  pool.release(0, made[5]);
+  gi::Edge_window* again = pool.allocate(0);
+  EXPECT_EQ(again, made[5]);
+  EXPECT_EQ(again->version, 12u);
+  EXPECT_EQ(pool.live(), n);
 }
 
 } // namespace
