@@ -204,7 +204,8 @@ private:
     if(b >= max_blocks)
       throw std::length_error("geodesic windows: more than 2^32 windows alive at once");
     T* block = static_cast<T*>(::operator new(sizeof(T) * block_size, std::align_val_t(Slot::block_alignment)));
-    std::uninitialized_value_construct_n(block, block_size);
+    // default-initialized, not zeroed, as in Object_pool: `allocate` writes an object whole
+    std::uninitialized_default_construct_n(block, block_size);
     s.blocks.emplace_back(block);
     m_blocks[b] = block;
     s.block = b;
