@@ -6,6 +6,7 @@
 // Prints one Markdown table row; with BENCH_PATTERNS_OFFSETS set, also each found centre's offset
 // from its nearest planted centre, over that instance's radius, on stderr; with
 // BENCH_PATTERNS_MESH=FILE, also writes the mesh built (to run the tool on it, or to view it);
+// with BENCH_PATTERNS_COUNTS set, the run's counts (samples, searches, rows) on stderr;
 // with BENCH_PATTERNS_LAMBDA=L, the local rows are approximate (`approximation(L)`).
 #include "support/pattern_meshes.h"
 
@@ -90,6 +91,10 @@ int main(int argc, char** argv)
       std::cerr << "\n";
     }
   const auto& st = found.statistics;
+  if(std::getenv("BENCH_PATTERNS_COUNTS"))
+    std::cerr << "samples " << st.samples << " patch_samples " << st.patch_samples << " searches " << st.searches
+              << " distance_rows " << st.distance_rows << " matches " << st.matches << " clusters " << st.clusters
+              << "\n";
   std::cout.precision(3);
   std::cout << "| " << model << " | " << scene.mesh.number_of_vertices() << " | " << s.planted << " | " << s.found
             << " | " << s.recall << " | " << s.precision << " | " << st.samples << " | " << st.sampling_seconds << " | "

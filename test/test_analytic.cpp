@@ -215,6 +215,56 @@ INSTANTIATE_TEST_SUITE_P(Analytic, Cone,
                          [](const ::testing::TestParamInfo<Cone_case>& i) { return std::string(i.param.name); });
 
 // ---------------------------------------------------------------------------------------------
+// A saddle: the pleated cone's apex has an angle sum above 2 pi. Developed around the apex,
+// vertex (k, j) lies at radius j / rings and polar angle k alpha, and between two points the
+// distance is the planar one across the smaller angular gap when that gap is below pi, and
+// otherwise the sum of their radii: the path passes through the apex. The apex sends windows
+// only into the directions a path through it can take, those at least pi from where its own
+// shortest path arrives on both sides; a cone of directions placed or sized wrongly leaves the
+// vertices behind the apex too far.
+
+TEST(AnalyticSaddle, PleatedConeThroughTheApex)
+{
+  const int segments = 12, rings = 10;
+  for(const double tilt : {0.35, 0.8}) {
+    std::vector<std::pair<double, double>> developed;
+    const Mesh m = make_pleated_cone(segments, rings, tilt, developed);
+    const double total = segments * std::acos((std::cos(2 * pi / segments) - tilt * tilt) / (1 + tilt * tilt));
+    ASSERT_GT(total, 2 * pi + 0.1) << "the apex must be a saddle";
+    auto polar = [&](Vertex v) { return developed[v.idx()]; };
+    auto distance = [&](Vertex a, Vertex b) {
+      const auto [r1, a1] = polar(a);
+      const auto [r2, a2] = polar(b);
+      double gap = std::fmod(std::abs(a1 - a2), total);
+      gap = std::min(gap, total - gap);
+      return gap >= pi ? r1 + r2 : std::sqrt(std::max(0., r1 * r1 + r2 * r2 - 2 * r1 * r2 * std::cos(gap)));
+    };
+    auto vertex = [&](int k, int j) { return Vertex(static_cast<Mesh::size_type>(1 + (j - 1) * segments + k)); };
+    for(const std::vector<Vertex>& sources :
+        {std::vector<Vertex>{vertex(2, 6)}, std::vector<Vertex>{vertex(5, 10)}, std::vector<Vertex>{vertex(0, 3), vertex(7, 9)}}) {
+      std::vector<double> exact(m.number_of_vertices(), inf);
+      for(Vertex v : m.vertices())
+        for(Vertex s : sources)
+          exact[v.idx()] = std::min(exact[v.idx()], distance(s, v));
+      // the vertices whose shortest path passes through the apex: their distance is the apex's
+      // plus their radius
+      std::size_t behind = 0;
+      for(Vertex v : m.vertices())
+        behind += v != Vertex(0) && exact[v.idx()] >= exact[0] + polar(v).first - 1e-12;
+      const std::string name = "tilt " + std::to_string(tilt) + " from vertex " + std::to_string(sources[0].idx());
+      ASSERT_GT(behind, std::size_t(segments)) << name << ": no vertex is reached through the apex";
+      EXPECT_TRUE(agrees_relative(solve(m, sources), exact, 1e-12, name + " VTP"));
+      EXPECT_TRUE(agrees_relative(solve<CGAL::Parallel_tag>(m, sources, CGAL_ext::parameters::number_of_threads(2)),
+                                  exact, 1e-12, name + " PVTP"));
+      EXPECT_TRUE(agrees_relative(solve(m, sources, CGAL_ext::parameters::algorithm(CGAL_ext::FWP_MMP)), exact, 1e-12,
+                                  name + " FWP-MMP"));
+      EXPECT_TRUE(agrees_relative(solve(m, sources, CGAL_ext::parameters::algorithm(CGAL_ext::MMP)), exact, 1e-12,
+                                  name + " MMP"));
+    }
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
 // Cube [0, s]^3 from the corner O = (0, 0, 0). A point on one of the three faces through O is at
 // its Euclidean distance. A point (s, y, z) of the far face x = s is reached across the face
 // y = 0 or the face z = 0: unfolded, at distance min(hypot(s + y, z), hypot(s + z, y)) (and

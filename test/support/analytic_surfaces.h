@@ -285,6 +285,59 @@ inline Mesh make_cone(double r, double height, int segments, int rings)
   return m;
 }
 
+/// A pleated cone: a saddle of angle sum above 2 pi at the apex (vertex 0, at the origin), flat
+/// everywhere else. Its `segments` generators (an even number) leave the apex upwards and
+/// downwards in turn, at slope `tilt`; `rings` rings of vertices on them, vertex
+/// 1 + (j - 1) segments + k on generator k at the fraction j / rings of the unit slant; each quad
+/// between two rings and two generators has a vertex inside it (off the generators, at an angle
+/// around the apex that changes from ring to ring: the apex reaches these only by windows). The faces between two
+/// generators lie in one plane through the apex, so the surface develops around the apex into a
+/// sector of angle `segments` times the angle alpha between two generators (above 2 pi when the
+/// pleats are deep). `polar` receives each vertex's developed polar coordinates (radius, angle in
+/// [0, segments alpha)). Between points more than pi apart around the apex, the shortest path
+/// passes through it.
+inline Mesh make_pleated_cone(int segments, int rings, double tilt, std::vector<std::pair<double, double>>& polar)
+{
+  std::vector<Vector> generator;
+  for(int k = 0; k < segments; ++k) {
+    const double a = 2 * pi * k / segments;
+    const Vector u(std::cos(a), std::sin(a), k % 2 == 0 ? tilt : -tilt);
+    generator.push_back(u / std::sqrt(u.squared_length()));
+  }
+  const double alpha = std::acos(generator[0] * generator[1]);
+  std::vector<Point> points{Point(0, 0, 0)};
+  polar.assign(1, {0., 0.});
+  for(int j = 1; j <= rings; ++j)
+    for(int k = 0; k < segments; ++k) {
+      const double t = double(j) / rings;
+      points.push_back(CGAL::ORIGIN + t * generator[std::size_t(k)]);
+      polar.emplace_back(t, k * alpha);
+    }
+  auto id = [&](int k, int j) { return j == 0 ? 0 : 1 + (j - 1) * segments + (k % segments); };
+  std::vector<Triangle> triangles;
+  for(int k = 0; k < segments; ++k) {
+    triangles.push_back({id(k, 0), id(k, 1), id(k + 1, 1)});
+    for(int j = 1; j < rings; ++j) {
+      // a point inside the quad, between the middles of its sides on the generators, nearer one
+      // or the other from ring to ring (so that, over the rings, such points lie at many angles
+      // around the apex), in 3D and in the sector's development (turned so that generator k lies
+      // on the x-axis)
+      const double middle = 0.5 * (double(j) + double(j + 1)) / rings, f = (j % 7 + 0.5) / 7;
+      const Vector& g0 = generator[std::size_t(k)];
+      const Vector& g1 = generator[std::size_t((k + 1) % segments)];
+      points.push_back(CGAL::ORIGIN + middle * ((1 - f) * g0 + f * g1));
+      const double x = middle * ((1 - f) + f * std::cos(alpha)), y = middle * f * std::sin(alpha);
+      polar.emplace_back(std::hypot(x, y), k * alpha + std::atan2(y, x));
+      const int c = int(points.size()) - 1;
+      triangles.push_back({id(k, j), id(k, j + 1), c});
+      triangles.push_back({id(k, j + 1), id(k + 1, j + 1), c});
+      triangles.push_back({id(k + 1, j + 1), id(k + 1, j), c});
+      triangles.push_back({id(k + 1, j), id(k, j), c});
+    }
+  }
+  return mesh_from_soup(points, triangles);
+}
+
 // ---------------------------------------------------------------------------------------------
 // The cube and the regular tetrahedron
 

@@ -127,7 +127,7 @@ private:
         relax(Vertex_update{s.vertex, index, 0.});
       } else {
         emit_face_point_windows(
-          m_mesh, s, [&](int u, double d) { relax(Vertex_update{u, index, d}); },
+          m_mesh, s, [&](int u, double d, const Arrival&) { relax(Vertex_update{u, index, d}); },
           [&](int g, const Window_geometry& w) { m_emitted_windows.push_back(New_window{w, g, index}); });
       }
     }
@@ -142,7 +142,7 @@ private:
     const int source = m_nearest_source[v];
     m_emitted[v] = sigma;
     emit_vertex_windows(
-      m_mesh, v, sigma, [&](int u, double d) { relax(Vertex_update{u, source, d}); },
+      m_mesh, v, sigma, [&](int u, double d, const Arrival&) { relax(Vertex_update{u, source, d}); },
       [&](int g, const Window_geometry& w) { m_emitted_windows.push_back(New_window{w, g, source}); });
   }
 

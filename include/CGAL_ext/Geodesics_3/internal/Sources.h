@@ -9,6 +9,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
+#include <limits>
 #include <cmath>
 #include <sstream>
 #include <string>
@@ -110,17 +112,118 @@ inline Source_point normalized_source(const Mesh_cache& m, Source_point s)
   return s;
 }
 
-/// The start of the propagation from a (pseudo-)source at vertex v at distance `sigma`:
-/// `relax(u, d)` for each neighbour u along its edge, and `add(g, w)` for a whole-edge window w
-/// (in the frame of half-edge g) on each edge opposite v, entering the face beyond it.
-template <class Relax, class Add>
-void emit_vertex_windows(const Mesh_cache& m, int v, double sigma, Relax relax, Add add)
+/// Where the path that gave a vertex its distance comes from: the unit direction from the
+/// vertex back along the path's last segment, in the frame of `halfedge`, a half-edge of a face
+/// with the vertex as a corner; `halfedge` is -1 when unknown (a source). Floats: only the
+/// cone of a saddle reads it, with a tolerance far above their precision.
+struct Arrival
 {
+  std::int32_t halfedge = -1;
+  float dx = 0, dy = 0;
+};
+
+/// The arrival at the point (vx, vy) of the frame of h from the point (x, y) of that frame.
+inline Arrival arrival_from(int h, double x, double y, double vx, double vy)
+{
+  const double ex = x - vx, ey = y - vy;
+  const double n = norm2d(ex, ey);
+  if(!(n > 0))
+    return Arrival{};
+  return Arrival{std::int32_t(h), float(ex / n), float(ey / n)};
+}
+
+/// The directions in which a shortest path that reaches an interior vertex v along an arrival
+/// can go on through v: those at least pi from the arrival on both sides. A path that turns by
+/// less on one side is shortened by cutting the corner there, and the windows that passed beside
+/// v carry the shorter path: windows of v outside the cone would only be clipped away, each
+/// against every window of its edge. As angles around v, counter-clockwise from the half-edge
+/// `m.first_outgoing[v]`: [start, start + width] modulo `total` (the angle sum at v), widened by
+/// `saddle_angle_tolerance` on each side. `corners` holds the angle at v of each face, in the
+/// order of `for_each_outgoing`.
+struct Saddle_cone
+{
+  double start = 0, width = 0, total = 0;
+  std::vector<double> corners;
+};
+
+/// Sets `cone` for v reached along `arrival` (whose half-edge is in a face around v).
+inline void set_saddle_cone(const Mesh_cache& m, int v, const Arrival& arrival, Saddle_cone& cone)
+{
+  const double pi = 3.14159265358979323846;
+  const int g = arrival.halfedge;
+  // hv: the half-edge of the arrival's face leaving v; (ux, uy): its direction in the frame of g
+  const Halfedge_frame f = m.frame(g);
+  int hv = g;
+  double ux = 1, uy = 0;
+  if(m.source(g) != v) {
+    const bool at_target = m.target(g) == v;
+    hv = at_target ? Mesh_cache::next(g) : Mesh_cache::prev(g);
+    ux = at_target ? f.apex_x - f.length : -f.apex_x;
+    uy = at_target ? f.apex_y : -f.apex_y;
+    const double n = norm2d(ux, uy);
+    ux /= n;
+    uy /= n;
+  }
+  const double dx = arrival.dx, dy = arrival.dy;
+  const double within = std::atan2(ux * dy - uy * dx, ux * dx + uy * dy); // the arrival from hv
+  double back = 0;
+  bool found = false;
+  cone.total = 0;
+  cone.corners.clear();
   m.for_each_outgoing(v, [&](int h) {
-    relax(m.target(h), sigma + m.length(h));
+    if(h == hv) {
+      back = cone.total + within;
+      found = true;
+    }
+    const Halfedge_frame fh = m.frame(h);
+    cone.corners.push_back(std::atan2(fh.apex_y, fh.apex_x));
+    cone.total += cone.corners.back();
+  });
+  if(!found) { // not a face around v (a removed one): every direction
+    cone.width = cone.total;
+    return;
+  }
+  cone.width = cone.total - 2 * pi + 2 * saddle_angle_tolerance;
+  cone.start = std::fmod(back + pi - saddle_angle_tolerance, cone.total);
+  if(cone.start < 0)
+    cone.start += cone.total;
+}
+
+/// The start of the propagation from a (pseudo-)source at vertex v at distance `sigma`:
+/// `relax(u, d, arrival)` for each neighbour u along its edge, and `add(g, w)` for a window w
+/// (in the frame of half-edge g) on each edge opposite v, entering the face beyond it: the whole
+/// edge, or with `cone` the part of it seen from v within the cone, if any.
+template <class Relax, class Add>
+void emit_vertex_windows(const Mesh_cache& m, int v, double sigma, Relax relax, Add add,
+                         const Saddle_cone* cone = nullptr)
+{
+  if(cone && !(cone->width < cone->total))
+    cone = nullptr;
+  std::size_t k = 0;
+  double around = 0; // the angle from m.first_outgoing[v] to h
+  m.for_each_outgoing(v, [&](int h) {
+    const Halfedge_frame fh = m.frame(h);
+    relax(m.target(h), sigma + m.length(h), Arrival{std::int32_t(h), -1.f, 0.f});
     const int across = Mesh_cache::next(h); // the edge opposite v in this face
-    relax(m.target(across), sigma + m.length(Mesh_cache::prev(h)));
+    relax(m.target(across), sigma + m.length(Mesh_cache::prev(h)), arrival_from(h, 0., 0., fh.apex_x, fh.apex_y));
     const int g = m.opposite(across);
+    double t0 = 0, t1 = 0, corner = 0; // the part of the face's corner at v within the cone
+    if(cone) {
+      corner = cone->corners[k++];
+      double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+      for(double start : {cone->start, cone->start - cone->total}) {
+        const double a = std::max(around, start), b = std::min(around + corner, start + cone->width);
+        if(a <= b) {
+          lo = std::min(lo, a);
+          hi = std::max(hi, b);
+        }
+      }
+      t0 = lo - around;
+      t1 = hi - around;
+      around += corner;
+      if(!(t0 <= t1))
+        return;
+    }
     if(g < 0)
       return;
     const Halfedge_frame f = m.frame(across);
@@ -130,6 +233,20 @@ void emit_vertex_windows(const Mesh_cache& m, int v, double sigma, Relax relax, 
     w.sx = f.length - f.apex_x; // g runs the other way along the same edge
     w.sy = -f.apex_y;
     w.sigma = sigma;
+    if(cone) {
+      // where the ray from v at angle t of the corner meets B -> C, as a fraction of it from B
+      // (in the frame of h: v = (0, 0), B = (l, 0), C the apex)
+      auto fraction = [&](double t) {
+        const double c = std::cos(t), s = std::sin(t);
+        return fh.length * s / (fh.apex_y * c - (fh.apex_x - fh.length) * s);
+      };
+      if(t1 < corner)
+        w.b0 = std::min(std::max((1 - fraction(t1)) * f.length, 0.), f.length);
+      if(t0 > 0)
+        w.b1 = std::min(std::max((1 - fraction(t0)) * f.length, 0.), f.length);
+      if(!(w.b1 > w.b0))
+        return;
+    }
     add(g, w);
   });
 }
@@ -169,7 +286,7 @@ void emit_face_point_windows(const Mesh_cache& m, const Source_point& s, Relax r
       const Halfedge_frame f = m.frame(h);
       const std::array<double, 2> q = m.point_in_frame(h, b);
       const double x = q[0], y = q[1];
-      relax(m.source(h), norm2d(x, y)); // distance to corner k, the origin of this frame
+      relax(m.source(h), norm2d(x, y), arrival_from(h, x, y, 0., 0.)); // corner k, the origin of this frame
       if(b[(k + 2) % 3] <= 0)
         continue; // the point lies on this edge
       const int g = m.opposite(h);

@@ -52,6 +52,7 @@ struct List_task
   std::uint32_t input = Window_pool::nil; // the list's windows, detached from it
   double apex_distance = 0; // shortest path to the apex found through the list
   int apex_source = -1;     // the source of that path
+  Arrival apex_arrival;     // and where it comes from
   Window_list to_ac, to_cb; // children for the lists across A->C and C->B
 };
 
@@ -286,10 +287,12 @@ private:
     m_stop_limit = std::max(farthest, m_stop_floor);
   }
 
-  void relax(int v, double d, int source)
+  void relax(int v, double d, int source, const Arrival& arrival = Arrival{})
   {
-    if(d < m_distance[v])
+    if(d < m_distance[v]) {
+      m_arrival[v] = arrival;
       m_mesh.for_each_copy_of_point(v, [&](int u) { set_distance(u, d, source); });
+    }
   }
 
   // Every distance a run reads is of a vertex it sets, or of the faces of the lists it
@@ -435,16 +438,23 @@ private:
         note_read(m_mesh.target(h));
         note_read(m_mesh.apex(h));
       });
+    // An interior saddle reached along a known path emits only into its cone. Not under the
+    // approximation: a reset makes vertices sources that emit every way.
+    const Arrival& arrival = m_arrival[v];
+    const bool in_cone = m_reset_step <= 0 && arrival.halfedge >= 0 && sigma > 0 && !m_mesh.is_border_vertex[v] &&
+                         !m_mesh.is_glued(v);
+    if(in_cone)
+      set_saddle_cone(m_mesh, v, arrival, m_cone);
     emit_vertex_windows(
-      m_mesh, v, sigma, [&](int u, double d) { relax(u, d, source); },
-      [&](int g, const Window_geometry& w) { insert_window(g, w, source); });
+      m_mesh, v, sigma, [&](int u, double d, const Arrival& a) { relax(u, d, source, a); },
+      [&](int g, const Window_geometry& w) { insert_window(g, w, source); }, in_cone ? &m_cone : nullptr);
   }
 
   void emit_from_face_point(const Source_point& s, int source)
   {
     m_window_limit = limit();
     emit_face_point_windows(
-      m_mesh, s, [&](int u, double d) { relax(u, d, source); },
+      m_mesh, s, [&](int u, double d, const Arrival& a) { relax(u, d, source, a); },
       [&](int g, const Window_geometry& w) { insert_window(g, w, source); });
   }
 
@@ -597,6 +607,7 @@ private:
     task.to_cb.clear();
     task.apex_distance = infinity();
     task.apex_source = -1;
+    task.apex_arrival = Arrival{};
     windows.clear();
     const Halfedge_frame f = m_mesh.frame(h);
     const double d_from = m_distance[m_mesh.source(h)];
@@ -617,16 +628,24 @@ private:
 
     // "One angle, two sides": the window with the shortest path to the apex splits the edge.
     double best = infinity(), split = 0;
+    const Window* best_window = nullptr;
     for(const Window& w : windows) {
       double p;
       const double d = distance_to_apex(w, apex_crossing(w, f.apex_x, f.apex_y), f.apex_x, f.apex_y, p);
       if(d < best) {
         best = d;
         split = p;
-        task.apex_source = w.source;
+        best_window = &w;
       }
     }
     task.apex_distance = best;
+    if(best_window) {
+      task.apex_source = best_window->source;
+      // the path comes to the apex from the pseudo-source, or from the window's end it bends at
+      const bool straight = split > best_window->b0 && split < best_window->b1;
+      task.apex_arrival = straight ? arrival_from(h, best_window->sx, best_window->sy, f.apex_x, f.apex_y)
+                                   : arrival_from(h, split, 0., f.apex_x, f.apex_y);
+    }
 
     const double d_apex = std::min(m_distance[m_mesh.apex(h)], best);
     const Face_crossing across = face_crossing(m_mesh, h, f);
@@ -648,7 +667,7 @@ private:
     ++m_statistics.lists_propagated;
     const int h = task.halfedge;
     if(task.apex_distance < infinity())
-      relax(m_mesh.apex(h), task.apex_distance, task.apex_source);
+      relax(m_mesh.apex(h), task.apex_distance, task.apex_source, task.apex_arrival);
     if(task.to_ac.size)
       add_chain(m_mesh.opposite(Mesh_cache::prev(h)), task.to_ac);
     if(task.to_cb.size)
@@ -721,6 +740,8 @@ private:
   static constexpr std::size_t list_grain = 8;
 
   std::vector<std::uint8_t> m_is_taken;
+  std::vector<Arrival> m_arrival = std::vector<Arrival>(m_mesh.number_of_vertices); // per vertex: the arrival of its distance
+  Saddle_cone m_cone; // of the vertex emitting (vertices emit on the calling thread only)
   std::vector<std::uint8_t> m_emits_when_taken; // pseudo-source, source, or made a source by a reset
   std::vector<std::uint8_t> m_is_stop;
   std::vector<std::uint32_t> m_head; // the first window of the list of each half-edge
