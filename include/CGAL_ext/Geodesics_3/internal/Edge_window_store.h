@@ -35,6 +35,7 @@ struct Vertex_update
   int vertex;
   int source;
   double distance;
+  Arrival arrival = Arrival{}; // where the path comes from (`emit_vertex_windows`)
 };
 
 /// A window to (re)queue with its smallest distance and its current version.
@@ -227,13 +228,27 @@ public:
       out.queued.push_back(Queued_window{window_key(p->geometry), p, p->version});
       // A piece reaching an end of the edge gives that vertex a distance.
       if(iv.first <= 0)
-        out.updates.push_back(Vertex_update{m_mesh.source(e), source, distance_at(c, 0.)});
+        out.updates.push_back(
+          Vertex_update{m_mesh.source(e), source, distance_at(c, 0.), arrival_at_end(g, h, m_mesh.source(e))});
       if(iv.second >= length)
-        out.updates.push_back(Vertex_update{m_mesh.target(e), source, distance_at(c, length)});
+        out.updates.push_back(
+          Vertex_update{m_mesh.target(e), source, distance_at(c, length), arrival_at_end(g, h, m_mesh.target(e))});
     }
   }
 
 private:
+  // The arrival at end vertex v of half-edge h of the path from the pseudo-source of g (in the
+  // frame of h, below it): that path crosses the face across h, where the pseudo-source, turned
+  // by a half turn into the frame of the opposite half-edge, lies above its axis.
+  Arrival arrival_at_end(const Window_geometry& g, int h, int v) const
+  {
+    const int o = m_mesh.opposite(h);
+    if(o < 0)
+      return Arrival{};
+    const double length = m_mesh.length(h);
+    return arrival_from(o, length - g.sx, -g.sy, v == m_mesh.source(o) ? 0. : length, 0.);
+  }
+
   // The same window seen from the other half-edge of its edge; the pseudo-source stays below
   // the axis (the frame turns by a half turn, and the window's side with it).
   static Window_geometry mirrored(const Window_geometry& w, double length)

@@ -141,15 +141,22 @@ private:
     const double sigma = m_distance[v];
     const int source = m_nearest_source[v];
     m_emitted[v] = sigma;
+    const Arrival& arrival = m_arrival[v];
+    const bool in_cone = arrival.halfedge >= 0 && sigma > 0 && !m_mesh.is_border_vertex[v] && !m_mesh.is_glued(v);
+    if(in_cone)
+      set_saddle_cone(m_mesh, v, arrival, m_cone);
     emit_vertex_windows(
-      m_mesh, v, sigma, [&](int u, double d, const Arrival&) { relax(Vertex_update{u, source, d}); },
-      [&](int g, const Window_geometry& w) { m_emitted_windows.push_back(New_window{w, g, source}); });
+      m_mesh, v, sigma, [&](int u, double d, const Arrival& a) { relax(Vertex_update{u, source, d, a}); },
+      [&](int g, const Window_geometry& w) { m_emitted_windows.push_back(New_window{w, g, source}); },
+      in_cone ? &m_cone : nullptr);
   }
 
   void relax(const Vertex_update& u)
   {
-    if(u.distance < m_distance[u.vertex])
+    if(u.distance < m_distance[u.vertex]) {
+      m_arrival[u.vertex] = u.arrival;
       m_mesh.for_each_copy_of_point(u.vertex, [&](int g) { set_distance(g, u); });
+    }
   }
 
   void set_distance(int v, const Vertex_update& u)
@@ -219,7 +226,11 @@ private:
     const double crossing = apex_crossing(w, f.apex_x, f.apex_y);
     double p;
     const double via = distance_to_apex(w, crossing, f.apex_x, f.apex_y, p);
-    out.apex = Vertex_update{m_mesh.apex(h), ew.source, via};
+    // the path comes to the apex from the pseudo-source, or from the window's end it bends at
+    const bool straight = p > w.b0 && p < w.b1;
+    out.apex = Vertex_update{m_mesh.apex(h), ew.source, via,
+                             straight ? arrival_from(h, w.sx, w.sy, f.apex_x, f.apex_y)
+                                      : arrival_from(h, p, 0., f.apex_x, f.apex_y)};
     make_children(w, face_crossing(m_mesh, h, f), crossing, crossing, m_min_window_length,
                   [&](int g, const Window_geometry& child, bool) {
                     out.children[out.number_of_children++] = New_window{child, g, ew.source};
@@ -494,6 +505,8 @@ private:
   }
 
   std::vector<std::uint8_t> m_emits_when_taken; // pseudo-source or source
+  std::vector<Arrival> m_arrival = std::vector<Arrival>(m_mesh.number_of_vertices); // per vertex: the arrival of its distance
+  Saddle_cone m_cone; // of the vertex emitting (vertices emit on the calling thread only)
   Edge_window_store m_windows;
   std::size_t m_main_slot = 0; // the pool slot of the thread running run()
   const bool m_use_heap;       // MMP; otherwise buckets

@@ -112,26 +112,6 @@ inline Source_point normalized_source(const Mesh_cache& m, Source_point s)
   return s;
 }
 
-/// Where the path that gave a vertex its distance comes from: the unit direction from the
-/// vertex back along the path's last segment, in the frame of `halfedge`, a half-edge of a face
-/// with the vertex as a corner; `halfedge` is -1 when unknown (a source). Floats: only the
-/// cone of a saddle reads it, with a tolerance far above their precision.
-struct Arrival
-{
-  std::int32_t halfedge = -1;
-  float dx = 0, dy = 0;
-};
-
-/// The arrival at the point (vx, vy) of the frame of h from the point (x, y) of that frame.
-inline Arrival arrival_from(int h, double x, double y, double vx, double vy)
-{
-  const double ex = x - vx, ey = y - vy;
-  const double n = norm2d(ex, ey);
-  if(!(n > 0))
-    return Arrival{};
-  return Arrival{std::int32_t(h), float(ex / n), float(ey / n)};
-}
-
 /// The directions in which a shortest path that reaches an interior vertex v along an arrival
 /// can go on through v: those at least pi from the arrival on both sides. A path that turns by
 /// less on one side is shortened by cutting the corner there, and the windows that passed beside
@@ -151,7 +131,7 @@ inline void set_saddle_cone(const Mesh_cache& m, int v, const Arrival& arrival, 
 {
   const double pi = 3.14159265358979323846;
   const int g = arrival.halfedge;
-  // hv: the half-edge of the arrival's face leaving v; (ux, uy): its direction in the frame of g
+  // hv: the half-edge of the arrival's face leaving v; (ux, uy): along it, in the frame of g
   const Halfedge_frame f = m.frame(g);
   int hv = g;
   double ux = 1, uy = 0;
@@ -160,9 +140,6 @@ inline void set_saddle_cone(const Mesh_cache& m, int v, const Arrival& arrival, 
     hv = at_target ? Mesh_cache::next(g) : Mesh_cache::prev(g);
     ux = at_target ? f.apex_x - f.length : -f.apex_x;
     uy = at_target ? f.apex_y : -f.apex_y;
-    const double n = norm2d(ux, uy);
-    ux /= n;
-    uy /= n;
   }
   const double dx = arrival.dx, dy = arrival.dy;
   const double within = std::atan2(ux * dy - uy * dx, ux * dx + uy * dy); // the arrival from hv
@@ -203,7 +180,7 @@ void emit_vertex_windows(const Mesh_cache& m, int v, double sigma, Relax relax, 
   double around = 0; // the angle from m.first_outgoing[v] to h
   m.for_each_outgoing(v, [&](int h) {
     const Halfedge_frame fh = m.frame(h);
-    relax(m.target(h), sigma + m.length(h), Arrival{std::int32_t(h), -1.f, 0.f});
+    relax(m.target(h), sigma + m.length(h), arrival_from(h, 0., 0., fh.length, 0.));
     const int across = Mesh_cache::next(h); // the edge opposite v in this face
     relax(m.target(across), sigma + m.length(Mesh_cache::prev(h)), arrival_from(h, 0., 0., fh.apex_x, fh.apex_y));
     const int g = m.opposite(across);

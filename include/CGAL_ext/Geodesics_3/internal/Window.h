@@ -67,6 +67,26 @@ inline double norm2d(double x, double y) { return square_root(x * x + y * y); }
 
 inline double distance_at(const Window_geometry& w, double x) { return w.sigma + norm2d(x - w.sx, w.sy); }
 
+/// Where the path that gave a vertex its distance comes from: a point of that path's last
+/// segment minus the vertex, in the frame of `halfedge`, a half-edge of a face with the vertex as
+/// a corner that holds the segment's end at the vertex; `halfedge` is -1 when unknown (a
+/// source). Floats: only the cone of a saddle reads it, with a tolerance far above their
+/// precision.
+struct Arrival
+{
+  std::int32_t halfedge = -1;
+  float dx = 0, dy = 0;
+};
+
+/// The arrival at the point (vx, vy) of the frame of h from the point (x, y) of that frame.
+inline Arrival arrival_from(int h, double x, double y, double vx, double vy)
+{
+  const float dx = float(x - vx), dy = float(y - vy);
+  if(dx == 0 && dy == 0)
+    return Arrival{};
+  return Arrival{std::int32_t(h), dx, dy};
+}
+
 /// A list window of `g`, its end distances computed, its paths from source `source`.
 inline Window list_window(const Window_geometry& g, int source)
 {
