@@ -141,14 +141,10 @@ private:
     const double sigma = m_distance[v];
     const int source = m_nearest_source[v];
     m_emitted[v] = sigma;
-    const Arrival& arrival = m_arrival[v];
-    const bool in_cone = arrival.halfedge >= 0 && sigma > 0 && !m_mesh.is_border_vertex[v] && !m_mesh.is_glued(v);
-    if(in_cone)
-      set_saddle_cone(m_mesh, v, arrival, m_cone);
     emit_vertex_windows(
       m_mesh, v, sigma, [&](int u, double d, const Arrival& a) { relax(Vertex_update{u, source, d, a}); },
       [&](int g, const Window_geometry& w) { m_emitted_windows.push_back(New_window{w, g, source}); },
-      in_cone ? &m_cone : nullptr);
+      saddle_cone_of(m_mesh, v, sigma, m_arrival[v], m_cone));
   }
 
   void relax(const Vertex_update& u)
@@ -226,11 +222,7 @@ private:
     const double crossing = apex_crossing(w, f.apex_x, f.apex_y);
     double p;
     const double via = distance_to_apex(w, crossing, f.apex_x, f.apex_y, p);
-    // the path comes to the apex from the pseudo-source, or from the window's end it bends at
-    const bool straight = p > w.b0 && p < w.b1;
-    out.apex = Vertex_update{m_mesh.apex(h), ew.source, via,
-                             straight ? arrival_from(h, w.sx, w.sy, f.apex_x, f.apex_y)
-                                      : arrival_from(h, p, 0., f.apex_x, f.apex_y)};
+    out.apex = Vertex_update{m_mesh.apex(h), ew.source, via, apex_arrival(h, w, p, f.apex_x, f.apex_y)};
     make_children(w, face_crossing(m_mesh, h, f), crossing, crossing, m_min_window_length,
                   [&](int g, const Window_geometry& child, bool) {
                     out.children[out.number_of_children++] = New_window{child, g, ew.source};

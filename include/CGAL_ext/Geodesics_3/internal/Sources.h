@@ -9,9 +9,9 @@
 
 #include <algorithm>
 #include <array>
-#include <cstdint>
-#include <limits>
 #include <cmath>
+#include <cstddef>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -164,6 +164,18 @@ inline void set_saddle_cone(const Mesh_cache& m, int v, const Arrival& arrival, 
   cone.start = std::fmod(back + pi - saddle_angle_tolerance, cone.total);
   if(cone.start < 0)
     cone.start += cone.total;
+}
+
+/// The cone for `emit_vertex_windows` of vertex v at distance `sigma` reached along `arrival`:
+/// `cone`, set, for an interior, unglued vertex with a known arrival that is not a source
+/// (sigma > 0); otherwise nullptr (every direction).
+inline const Saddle_cone* saddle_cone_of(const Mesh_cache& m, int v, double sigma, const Arrival& arrival,
+                                         Saddle_cone& cone)
+{
+  if(arrival.halfedge < 0 || !(sigma > 0) || m.is_border_vertex[std::size_t(v)] || m.is_glued(v))
+    return nullptr;
+  set_saddle_cone(m, v, arrival, cone);
+  return &cone;
 }
 
 /// The start of the propagation from a (pseudo-)source at vertex v at distance `sigma`:

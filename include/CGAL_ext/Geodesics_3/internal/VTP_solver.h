@@ -438,16 +438,12 @@ private:
         note_read(m_mesh.target(h));
         note_read(m_mesh.apex(h));
       });
-    // An interior saddle reached along a known path emits only into its cone. Not under the
-    // approximation: a reset makes vertices sources that emit every way.
-    const Arrival& arrival = m_arrival[v];
-    const bool in_cone = m_reset_step <= 0 && arrival.halfedge >= 0 && sigma > 0 && !m_mesh.is_border_vertex[v] &&
-                         !m_mesh.is_glued(v);
-    if(in_cone)
-      set_saddle_cone(m_mesh, v, arrival, m_cone);
+    // A saddle emits only into its cone; not under the approximation, whose resets make
+    // vertices sources that emit every way.
+    const Saddle_cone* cone = m_reset_step <= 0 ? saddle_cone_of(m_mesh, v, sigma, m_arrival[v], m_cone) : nullptr;
     emit_vertex_windows(
       m_mesh, v, sigma, [&](int u, double d, const Arrival& a) { relax(u, d, source, a); },
-      [&](int g, const Window_geometry& w) { insert_window(g, w, source); }, in_cone ? &m_cone : nullptr);
+      [&](int g, const Window_geometry& w) { insert_window(g, w, source); }, cone);
   }
 
   void emit_from_face_point(const Source_point& s, int source)
@@ -641,10 +637,7 @@ private:
     task.apex_distance = best;
     if(best_window) {
       task.apex_source = best_window->source;
-      // the path comes to the apex from the pseudo-source, or from the window's end it bends at
-      const bool straight = split > best_window->b0 && split < best_window->b1;
-      task.apex_arrival = straight ? arrival_from(h, best_window->sx, best_window->sy, f.apex_x, f.apex_y)
-                                   : arrival_from(h, split, 0., f.apex_x, f.apex_y);
+      task.apex_arrival = apex_arrival(h, *best_window, split, f.apex_x, f.apex_y);
     }
 
     const double d_apex = std::min(m_distance[m_mesh.apex(h)], best);

@@ -87,6 +87,14 @@ inline Arrival arrival_from(int h, double x, double y, double vx, double vy)
   return Arrival{std::int32_t(h), dx, dy};
 }
 
+/// The arrival at the apex (cx, cy) of the frame of h of the path through window w that
+/// `distance_to_apex` measured, p the point it gave: from the pseudo-source when the path is
+/// straight, from p when it bends at an end of the window.
+inline Arrival apex_arrival(int h, const Window_geometry& w, double p, double cx, double cy)
+{
+  return p > w.b0 && p < w.b1 ? arrival_from(h, w.sx, w.sy, cx, cy) : arrival_from(h, p, 0., cx, cy);
+}
+
 /// A list window of `g`, its end distances computed, its paths from source `source`.
 inline Window list_window(const Window_geometry& g, int source)
 {
