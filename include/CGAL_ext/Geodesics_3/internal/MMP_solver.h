@@ -127,7 +127,7 @@ private:
         relax(Vertex_update{s.vertex, index, 0.});
       } else {
         emit_face_point_windows(
-          m_mesh, s, [&](int u, double d, const Arrival&) { relax(Vertex_update{u, index, d}); },
+          m_mesh, s, [&](int u, double d, const Arrival& a) { relax(Vertex_update{u, index, d, a}); },
           [&](int g, const Window_geometry& w) { m_emitted_windows.push_back(New_window{w, g, index}); });
       }
     }

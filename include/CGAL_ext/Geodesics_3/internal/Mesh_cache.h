@@ -6,6 +6,7 @@
 #include <CGAL_ext/Geodesics_3/Tolerances.h>
 #include <CGAL_ext/Geodesics_3/internal/Inlining.h>
 
+#include <CGAL/number_type_config.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/properties.h>
@@ -712,7 +713,7 @@ inline void Mesh_cache::compute_vertex_flags()
   const std::size_t nv = position.size();
   is_border_vertex.assign(nv, 0);
   is_pseudo_source.assign(nv, 0);
-  const double two_pi = 2 * 3.14159265358979323846;
+  const double two_pi = 2 * CGAL_PI;
   for(std::size_t v = 0; v < nv; ++v) {
     double sum = 0;
     for_each_outgoing(int(v), [&](int h) { sum += corner_angle[h]; });

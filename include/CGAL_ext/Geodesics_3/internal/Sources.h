@@ -129,7 +129,7 @@ struct Saddle_cone
 /// Sets `cone` for v reached along `arrival` (whose half-edge is in a face around v).
 inline void set_saddle_cone(const Mesh_cache& m, int v, const Arrival& arrival, Saddle_cone& cone)
 {
-  const double pi = 3.14159265358979323846;
+  const double pi = CGAL_PI;
   const int g = arrival.halfedge;
   // hv: the half-edge of the arrival's face leaving v; (ux, uy): along it, in the frame of g
   const Halfedge_frame f = m.frame(g);
