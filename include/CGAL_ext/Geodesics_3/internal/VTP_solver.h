@@ -611,9 +611,8 @@ private:
     for(std::uint32_t i = task.input; i != Window_pool::nil;) {
       Window& listed = m_pool[i];
       const std::uint32_t next = listed.next;
-      windows.push_back(listed);
-      if(!keep_window(windows.back(), h, d_from, d_to))
-        windows.pop_back();
+      if(keep_window(listed, h, d_from, d_to))
+        windows.push_back(listed);
       m_pool.release_one(slot, i, listed);
       i = next;
     }
