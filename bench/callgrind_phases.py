@@ -17,7 +17,7 @@ import subprocess
 import sys
 
 PHASES = [
-    ('pairwise clipping', ['prune_pairs', 'clip_pair', 'compare_on_overlap', 'equal_distance_points']),
+    ('pairwise clipping', ['prune_pairs', 'sort_by_start', 'clip_pair', 'compare_on_overlap', 'equal_distance_points']),
     ('trimming', ['trim_by_edge_vertices', 'keep_window', 'list_window']),
     ('unfolding', ['make_child', 'face_crossing', 'apex_crossing', 'distance_to_apex']),
     ('list bookkeeping', ['schedule', 'inside_swept', 'add_chain', 'detach', 'merge', 'relax', 'set_distance',

@@ -438,9 +438,9 @@ private:
         note_read(m_mesh.target(h));
         note_read(m_mesh.apex(h));
       });
-    // A saddle emits only into its cone; not under the approximation, whose resets make
-    // vertices sources that emit every way.
-    const Saddle_cone* cone = m_reset_step <= 0 ? saddle_cone_of(m_mesh, v, sigma, m_arrival[v], m_cone) : nullptr;
+    // A saddle emits only into its cone (a vertex a reset of the approximation made a source
+    // has no arrival: every way).
+    const Saddle_cone* cone = saddle_cone_of(m_mesh, v, sigma, m_arrival[v], m_cone);
     emit_vertex_windows(
       m_mesh, v, sigma, [&](int u, double d, const Arrival& a) { relax(u, d, source, a); },
       [&](int g, const Window_geometry& w) { insert_window(g, w, source); }, cone);
@@ -486,9 +486,13 @@ private:
     // When several radii are passed at once, one reset at the last of them does.
     const double r = std::max(m_next_reset, std::floor(d / m_reset_step) * m_reset_step);
     const double guard = r + approximation_guard * m_mesh.mean_edge_length;
+    // The windows that carried a marked vertex's path are dropped: it emits every way (no
+    // arrival), unless a later path lowers its distance.
     auto mark = [&](const Vertex_entry& e) {
-      if(!m_is_taken[e.second] && m_distance[e.second] <= guard)
+      if(!m_is_taken[e.second] && m_distance[e.second] <= guard) {
         m_emits_when_taken[e.second] = 1;
+        m_arrival[e.second] = Arrival{};
+      }
     };
     if(m_batched)
       m_buckets.for_each(mark);
