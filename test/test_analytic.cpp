@@ -262,6 +262,15 @@ TEST(AnalyticSaddle, PleatedConeThroughTheApex)
                                   name + " FWP-MMP"));
       EXPECT_TRUE(agrees_relative(solve(m, sources, CGAL_ext::parameters::algorithm(CGAL_ext::MMP)), exact, 1e-12,
                                   name + " MMP"));
+      // The approximation's saddles emit into their cone too: exact while no reset happens;
+      // with resets (whose sources emit every way), every vertex reached and none below exact.
+      EXPECT_TRUE(agrees_relative(solve(m, sources, CGAL_ext::parameters::approximation(1e6)), exact, 1e-12,
+                                  name + " AVTP without a reset"));
+      const std::vector<double> approximate = solve(m, sources, CGAL_ext::parameters::approximation(1.));
+      for(Vertex v : m.vertices()) {
+        EXPECT_TRUE(std::isfinite(approximate[v.idx()])) << name << " AVTP, vertex " << v.idx();
+        EXPECT_GE(approximate[v.idx()], exact[v.idx()] * (1 - 1e-12)) << name << " AVTP, vertex " << v.idx();
+      }
     }
   }
 }
