@@ -144,15 +144,13 @@ private:
     emit_vertex_windows(
       m_mesh, v, sigma, [&](int u, double d, const Arrival& a) { relax(Vertex_update{u, source, d, a}); },
       [&](int g, const Window_geometry& w) { m_emitted_windows.push_back(New_window{w, g, source}); },
-      saddle_cone_of(m_mesh, v, sigma, m_arrival[v], m_cone));
+      cone_of(v));
   }
 
   void relax(const Vertex_update& u)
   {
-    if(u.distance < m_distance[u.vertex]) {
-      m_arrival[u.vertex] = u.arrival;
+    if(lowers(u.vertex, u.distance, u.arrival))
       m_mesh.for_each_copy_of_point(u.vertex, [&](int g) { set_distance(g, u); });
-    }
   }
 
   void set_distance(int v, const Vertex_update& u)
@@ -497,8 +495,6 @@ private:
   }
 
   std::vector<std::uint8_t> m_emits_when_taken; // pseudo-source or source
-  std::vector<Arrival> m_arrival = std::vector<Arrival>(m_mesh.number_of_vertices); // per vertex: the arrival of its distance
-  Saddle_cone m_cone; // of the vertex emitting (vertices emit on the calling thread only)
   Edge_window_store m_windows;
   std::size_t m_main_slot = 0; // the pool slot of the thread running run()
   const bool m_use_heap;       // MMP; otherwise buckets

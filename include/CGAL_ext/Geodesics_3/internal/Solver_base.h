@@ -20,7 +20,8 @@ namespace Geodesics_3 {
 namespace internal {
 
 /// What the VTP and MMP solvers share: the mesh, the sources, the vertex distances and
-/// nearest sources, the settings, the trimming of a window by its edge's end vertices, and the statistics.
+/// nearest sources with the arrivals of the paths that gave them (and so the saddles' cones),
+/// the settings, the trimming of a window by its edge's end vertices, and the statistics.
 class Solver_base
 {
 public:
@@ -89,6 +90,26 @@ protected:
     return trim_by_edge_vertices(w, w.d0, w.d1, m_mesh.length(h), d_from, d_to, key) && key <= m_window_limit;
   }
 
+  /// Whether `d` lowers the distance of v; if so, records `arrival`, where the path giving it
+  /// comes from (what a saddle's cone starts from).
+  bool lowers(int v, double d, const Arrival& arrival)
+  {
+    if(!(d < m_distance[std::size_t(v)]))
+      return false;
+    m_arrival[std::size_t(v)] = arrival;
+    return true;
+  }
+
+  /// The cone of v emitting at its distance (`saddle_cone_of`), or nullptr: every direction.
+  /// Vertices emit on the thread running the solver only.
+  const Saddle_cone* cone_of(int v)
+  {
+    return saddle_cone_of(m_mesh, v, m_distance[std::size_t(v)], m_arrival[std::size_t(v)], m_cone);
+  }
+
+  /// v emits every way from now on (until a path lowers its distance again).
+  void forget_arrival(int v) { m_arrival[std::size_t(v)] = Arrival{}; }
+
   template <class Pool>
   void note_live_windows(const Pool& pool)
   {
@@ -112,6 +133,8 @@ protected:
   std::vector<double> m_distance;
   std::vector<int> m_nearest_source;
   std::vector<double> m_emitted; // sigma of the last windows a pseudo-source emitted
+  std::vector<Arrival> m_arrival = std::vector<Arrival>(m_mesh.number_of_vertices); // per vertex: the arrival of its distance
+  Saddle_cone m_cone; // of the vertex emitting
   double m_max_distance;         // in the cache's unit
   double m_window_limit;         // windows whose smallest distance is beyond it are dropped
   const double m_min_window_length;

@@ -112,39 +112,6 @@ inline Source_point normalized_source(const Mesh_cache& m, Source_point s)
   return s;
 }
 
-/// std::atan2(y, x) to within 3e-15 rad, without the library call: a saddle's cone takes one a
-/// face around it each time it emits. The ratio of the smaller to the larger of |x| and |y| is
-/// brought within tan(pi/16) of 0, tan(pi/8) or 1 (the angle within pi/16 of 0, pi/8 or pi/4),
-/// where the Taylor series of the arctangent to t^17 is exact to 3e-15.
-inline double polar_angle(double y, double x)
-{
-  const double pi = CGAL_PI;
-  const double ax = std::abs(x), ay = std::abs(y);
-  const double larger = std::max(ax, ay);
-  if(!(larger > 0))
-    return std::atan2(y, x); // zeros (and NaN)
-  const double a = std::min(ax, ay) / larger;
-  const double tan_pi_16 = 0.19891236737965800691, tan_3pi_16 = 0.66817863791929891999,
-               tan_pi_8 = 0.41421356237309504880;
-  double base = 0, t = a;
-  if(a >= tan_3pi_16) {
-    base = pi / 4;
-    t = (a - 1) / (a + 1);
-  } else if(a >= tan_pi_16) {
-    base = pi / 8;
-    t = (a - tan_pi_8) / (1 + a * tan_pi_8);
-  }
-  const double u = t * t;
-  const double series =
-    1 + u * (-1. / 3 + u * (1. / 5 + u * (-1. / 7 + u * (1. / 9 + u * (-1. / 11 + u * (1. / 13 + u * (-1. / 15 + u / 17)))))));
-  double r = base + t * series;
-  if(ay > ax)
-    r = pi / 2 - r;
-  if(x < 0)
-    r = pi - r;
-  return std::signbit(y) ? -r : r;
-}
-
 /// The directions in which a shortest path that reaches an interior vertex v along an arrival
 /// can go on through v: those at least pi from the arrival on both sides. A path that turns by
 /// less on one side is shortened by cutting the corner there, and the windows that passed beside
@@ -185,8 +152,7 @@ inline void set_saddle_cone(const Mesh_cache& m, int v, const Arrival& arrival, 
       back = cone.total + within;
       found = true;
     }
-    const Halfedge_frame fh = m.frame(h);
-    cone.corners.push_back(polar_angle(fh.apex_y, fh.apex_x));
+    cone.corners.push_back(m.angle_at_source(h));
     cone.total += cone.corners.back();
   });
   if(!found) { // not a face around v (a removed one): every direction
@@ -194,9 +160,11 @@ inline void set_saddle_cone(const Mesh_cache& m, int v, const Arrival& arrival, 
     return;
   }
   cone.width = cone.total - 2 * pi + 2 * saddle_angle_tolerance;
-  cone.start = std::fmod(back + pi - saddle_angle_tolerance, cone.total);
-  if(cone.start < 0)
-    cone.start += cone.total;
+  // back lies in [0, total) and total > pi: the start is in [0, 2 total), brought below total
+  // by one subtraction, exact as std::fmod's
+  cone.start = back + pi - saddle_angle_tolerance;
+  if(cone.start >= cone.total)
+    cone.start -= cone.total;
 }
 
 /// The cone for `emit_vertex_windows` of vertex v at distance `sigma` reached along `arrival`:

@@ -289,10 +289,8 @@ private:
 
   void relax(int v, double d, int source, const Arrival& arrival = Arrival{})
   {
-    if(d < m_distance[v]) {
-      m_arrival[v] = arrival;
+    if(lowers(v, d, arrival))
       m_mesh.for_each_copy_of_point(v, [&](int u) { set_distance(u, d, source); });
-    }
   }
 
   // Every distance a run reads is of a vertex it sets, or of the faces of the lists it
@@ -440,7 +438,7 @@ private:
       });
     // A saddle emits only into its cone (a vertex a reset of the approximation made a source
     // has no arrival: every way).
-    const Saddle_cone* cone = saddle_cone_of(m_mesh, v, sigma, m_arrival[v], m_cone);
+    const Saddle_cone* cone = cone_of(v);
     emit_vertex_windows(
       m_mesh, v, sigma, [&](int u, double d, const Arrival& a) { relax(u, d, source, a); },
       [&](int g, const Window_geometry& w) { insert_window(g, w, source); }, cone);
@@ -491,7 +489,7 @@ private:
     auto mark = [&](const Vertex_entry& e) {
       if(!m_is_taken[e.second] && m_distance[e.second] <= guard) {
         m_emits_when_taken[e.second] = 1;
-        m_arrival[e.second] = Arrival{};
+        forget_arrival(e.second);
       }
     };
     if(m_batched)
@@ -736,8 +734,6 @@ private:
   static constexpr std::size_t list_grain = 8;
 
   std::vector<std::uint8_t> m_is_taken;
-  std::vector<Arrival> m_arrival = std::vector<Arrival>(m_mesh.number_of_vertices); // per vertex: the arrival of its distance
-  Saddle_cone m_cone; // of the vertex emitting (vertices emit on the calling thread only)
   std::vector<std::uint8_t> m_emits_when_taken; // pseudo-source, source, or made a source by a reset
   std::vector<std::uint8_t> m_is_stop;
   std::vector<std::uint32_t> m_head; // the first window of the list of each half-edge
