@@ -13,6 +13,7 @@
 #include <CLI/CLI.hpp>
 
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -21,6 +22,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <numeric>
 #include <sstream>
 
 namespace geodesic_tool {
@@ -107,6 +109,13 @@ void Matrix_writer::add_row(const std::vector<double>& row)
   ++m_written;
 }
 
+void Matrix_writer::add_sparse_row(const std::vector<std::pair<std::size_t, double>>& entries)
+{
+  for(const auto& [column, value] : entries)
+    m_entries.push_back(Entry{m_written, column, value});
+  ++m_written;
+}
+
 bool Matrix_writer::finish()
 {
   if(m_format == Matrix_format::mtx) {
@@ -159,6 +168,41 @@ std::vector<std::size_t> target_columns(const Matrix_options& options, const std
   }
   return columns;
 }
+
+/// The columns of each mesh vertex: those whose file point is that vertex (a point may be a
+/// column several times, and merged points share a vertex), by increasing column.
+class Columns_of_vertices
+{
+public:
+  Columns_of_vertices(const Mesh_file& file, const std::vector<std::size_t>& columns)
+    : m_begin(file.mesh.number_of_vertices() + 1, 0)
+    , m_column(columns.size())
+  {
+    for(std::size_t p : columns)
+      ++m_begin[file.vertex_of_point[p].idx() + 1];
+    std::partial_sum(m_begin.begin(), m_begin.end(), m_begin.begin());
+    std::vector<std::size_t> next(m_begin.begin(), m_begin.end() - 1);
+    for(std::size_t j = 0; j < columns.size(); ++j)
+      m_column[next[file.vertex_of_point[columns[j]].idx()]++] = j;
+  }
+  struct Range
+  {
+    const std::size_t *first, *last;
+    const std::size_t* begin() const { return first; }
+    const std::size_t* end() const { return last; }
+  };
+  /// The columns of the vertex of index v.
+  Range vertex(std::size_t v) const
+  {
+    if(v + 1 >= m_begin.size())
+      return Range{nullptr, nullptr};
+    return Range{m_column.data() + m_begin[v], m_column.data() + m_begin[v + 1]};
+  }
+
+private:
+  std::vector<std::size_t> m_begin; // by vertex index: where its columns start in m_column
+  std::vector<std::size_t> m_column;
+};
 
 std::string gigabytes(double bytes)
 {
@@ -235,16 +279,33 @@ int run_matrix(const Matrix_options& options)
   const Stopwatch solve_watch;
   write_output(options.output, [&](std::ostream& os) {
     Matrix_writer writer(os, format, sources.size(), columns.size());
-    std::vector<double> selected(columns.size());
-    compute_distance_rows(file, sources, options.max_distance, options.threads.value_or(0),
-                          [&](std::size_t i, const std::vector<double>& row) {
-                            for(std::size_t j = 0; j < columns.size(); ++j) {
-                              selected[j] = row[columns[j]];
-                              entries += std::isfinite(selected[j]);
-                            }
-                            writer.add_row(selected);
-                            progress.show("row", i + 1, sources.size());
-                          });
+    if(format == Matrix_format::mtx && std::isfinite(options.max_distance)) {
+      // a local matrix: sparse rows, so that a row costs its entries, not the number of columns
+      const Columns_of_vertices columns_of(file, columns);
+      std::vector<std::pair<std::size_t, double>> selected;
+      compute_sparse_distance_rows(file, sources, options.max_distance, options.threads.value_or(0),
+                                   [&](std::size_t i, const std::vector<std::pair<std::size_t, double>>& row) {
+                                     selected.clear();
+                                     for(const auto& [vertex, distance] : row)
+                                       for(std::size_t j : columns_of.vertex(vertex))
+                                         selected.emplace_back(j, distance);
+                                     std::sort(selected.begin(), selected.end());
+                                     entries += selected.size();
+                                     writer.add_sparse_row(selected);
+                                     progress.show("row", i + 1, sources.size());
+                                   });
+    } else {
+      std::vector<double> selected(columns.size());
+      compute_distance_rows(file, sources, options.max_distance, options.threads.value_or(0),
+                            [&](std::size_t i, const std::vector<double>& row) {
+                              for(std::size_t j = 0; j < columns.size(); ++j) {
+                                selected[j] = row[columns[j]];
+                                entries += std::isfinite(selected[j]);
+                              }
+                              writer.add_row(selected);
+                              progress.show("row", i + 1, sources.size());
+                            });
+    }
     progress.clear();
     return writer.finish();
   });

@@ -46,6 +46,8 @@ class Matrix_writer
 public:
   Matrix_writer(std::ostream& os, Matrix_format format, std::size_t rows, std::size_t columns);
   void add_row(const std::vector<double>& row);
+  /// .mtx only: the next row given by its finite entries, (column, value) by increasing column.
+  void add_sparse_row(const std::vector<std::pair<std::size_t, double>>& entries);
   /// Writes what is held; false if the stream failed.
   bool finish();
 

@@ -268,22 +268,44 @@ Path_result trace_path(const Mesh_file& file, const std::vector<Surface_point>& 
                                     : trace_path_with<CGAL::Sequential_tag>(file, sources, target, choice);
 }
 
+namespace {
+
+/// Calls `f(library_sources, np)` with the named parameters of the rows of a matrix, once the
+/// sources are checked, on `threads` threads (0: all cores).
+template <class Function>
+void with_matrix_rows(const Mesh_file& file, const std::vector<Surface_point>& sources, double max_distance,
+                      int threads, Function f)
+{
+  check_a_source_is_on_a_face(file, sources);
+  const auto np = CGAL_ext::parameters::glued_vertices(file.glued_vertices)
+                    .max_distance(max_distance)
+                    .number_of_threads(threads);
+  const Thread_allowance allowance(threads);
+  with_library_sources(file, sources, [&](const auto& library_sources) { f(library_sources, np); });
+}
+
+} // namespace
+
 void compute_distance_rows(const Mesh_file& file, const std::vector<Surface_point>& sources, double max_distance,
                            int threads, const std::function<void(std::size_t, const std::vector<double>&)>& row)
 {
-  check_a_source_is_on_a_face(file, sources);
   std::vector<double> in_file_order(file.vertex_of_point.size());
   const auto to_file_order = [&](std::size_t i, const std::vector<double>& by_vertex) {
     for(std::size_t p = 0; p < in_file_order.size(); ++p)
       in_file_order[p] = by_vertex[file.vertex_of_point[p].idx()];
     row(i, in_file_order);
   };
-  const auto np = CGAL_ext::parameters::glued_vertices(file.glued_vertices)
-                    .max_distance(max_distance)
-                    .number_of_threads(threads);
-  const Thread_allowance allowance(threads);
-  with_library_sources(file, sources, [&](const auto& library_sources) {
+  with_matrix_rows(file, sources, max_distance, threads, [&](const auto& library_sources, const auto& np) {
     CGAL_ext::geodesic_distance_rows<Parallel_tag>(file.mesh, library_sources, to_file_order, np);
+  });
+}
+
+void compute_sparse_distance_rows(
+  const Mesh_file& file, const std::vector<Surface_point>& sources, double max_distance, int threads,
+  const std::function<void(std::size_t, const std::vector<std::pair<std::size_t, double>>&)>& row)
+{
+  with_matrix_rows(file, sources, max_distance, threads, [&](const auto& library_sources, const auto& np) {
+    CGAL_ext::geodesic_sparse_distance_rows<Parallel_tag>(file.mesh, library_sources, row, np);
   });
 }
 

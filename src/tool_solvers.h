@@ -53,6 +53,13 @@ Path_result trace_path(const Mesh_file& file, const std::vector<Surface_point>& 
 void compute_distance_rows(const Mesh_file& file, const std::vector<Surface_point>& sources, double max_distance,
                            int threads, const std::function<void(std::size_t, const std::vector<double>&)>& row);
 
+/// The same within `max_distance` (finite), each row sparse: the pairs (mesh vertex index,
+/// distance) of the vertices reached, by increasing index; a row costs what its propagation
+/// sweeps, not the size of the mesh.
+void compute_sparse_distance_rows(
+  const Mesh_file& file, const std::vector<Surface_point>& sources, double max_distance, int threads,
+  const std::function<void(std::size_t, const std::vector<std::pair<std::size_t, double>>&)>& row);
+
 /// The point of the file of each vertex of the mesh (of merged points the first; a copy the
 /// repair made of a point: that point).
 std::vector<std::size_t> point_of_vertex(const Mesh_file& file);

@@ -2146,6 +2146,42 @@ TEST_F(Tool, matrix_square_npy_and_sparse_mtx)
   }
 }
 
+// A local .mtx matrix is made of sparse rows (each costs its entries, not the number of
+// columns): the same entries as the dense rows cut at the distance, with columns repeated, in
+// any order, and on points that the reading merges (a duplicate) or copies (a non-manifold vertex).
+TEST_F(Tool, local_mtx_matrix_equals_the_dense_rows_cut_at_the_distance)
+{
+  // a bowtie with a non-manifold vertex 0, and point 5 a duplicate of point 2
+  write("bowtie.off", "OFF\n6 3 0\n0 0 0\n1 0 0\n0 1 0\n-1 0 0\n0 -1 0\n0 1 0\n3 0 1 2\n3 0 3 4\n3 0 5 3\n");
+  const std::string targets = " --target 3,5,1,3,2,0,4";
+  const double radius = 1.9;
+  for(const std::string sources : {" --all", " --source 1,f:1:0.2:0.3:0.5"}) {
+    const Result dense_run = run("matrix bowtie.off" + sources + targets + " --output m.txt");
+    ASSERT_EQ(dense_run.exit_code, 0) << dense_run.err;
+    const auto dense = parse_rows(read_text(path("m.txt")));
+    const Result sparse_run = run("matrix bowtie.off" + sources + targets + " --max-distance 1.9 --output m.mtx");
+    ASSERT_EQ(sparse_run.exit_code, 0) << sparse_run.err;
+    const std::vector<std::string> lines = lines_of(read_text(path("m.mtx")));
+    ASSERT_GE(lines.size(), 3u);
+    std::istringstream size_line(lines[2]);
+    std::size_t rows = 0, columns = 0, entries = 0;
+    size_line >> rows >> columns >> entries;
+    ASSERT_EQ(rows, dense.size());
+    ASSERT_EQ(columns, 7u);
+    std::vector<std::string> expected;
+    for(std::size_t i = 0; i < dense.size(); ++i)
+      for(std::size_t j = 0; j < dense[i].size(); ++j)
+        if(dense[i][j] <= radius) {
+          char line[96];
+          std::snprintf(line, sizeof(line), "%zu %zu %.17g", i + 1, j + 1, dense[i][j]);
+          expected.push_back(line);
+        }
+    EXPECT_EQ(entries, expected.size()) << sources;
+    EXPECT_EQ(std::vector<std::string>(lines.begin() + 3, lines.end()), expected) << sources;
+    EXPECT_GT(expected.size(), 2 * dense.size()) << "the rows reach beyond their sources";
+  }
+}
+
 // A matrix that cannot be written says how much it needs and what to do instead.
 TEST(Tool_matrix, a_matrix_too_large_is_refused_before_it_is_solved)
 {
