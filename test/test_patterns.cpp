@@ -179,41 +179,79 @@ TEST(Pattern_steps, Mean_shift_finds_known_clusters)
 
 TEST(Pattern_steps, Embedding_separates_two_planted_consistent_groups)
 {
-  // a patch of 8 samples in the plane; two copies of it moved (and one turned) far apart, plus
-  // matches to random samples: the clusters are the two copies
-  std::mt19937 rng(2);
-  std::uniform_real_distribution<double> u(0, 1);
-  std::vector<Point_2> patch, mesh;
-  for(int i = 0; i < 8; ++i)
-    patch.push_back(Point_2(u(rng), u(rng)));
-  const auto place = [&](double dx, double dy, double turn) {
-    for(const Point_2& p : patch)
-      mesh.push_back(Point_2(dx + std::cos(turn) * p.x() - std::sin(turn) * p.y(),
-                             dy + std::sin(turn) * p.x() + std::cos(turn) * p.y()));
-  };
-  place(5, 0, 0);
-  place(0, 5, 1.0);
-  for(int i = 0; i < 16; ++i)
-    mesh.push_back(Point_2(10 * u(rng), 10 * u(rng)));
-  std::vector<internal::Pattern_match> matches;
-  for(std::size_t i = 0; i < 8; ++i) {
-    matches.push_back({i, i, 1.0, 0.0});
-    matches.push_back({i, 8 + i, 1.0, 0.0});
-    matches.push_back({i, 16 + 2 * i, 1.0, 0.0});
+  // a patch of `size` samples in the plane; two copies of it moved (and one turned) far apart,
+  // plus matches to random samples: the clusters are the two copies. 8 samples make 24 matches
+  // (the dense eigensolver), 24 make 72 (Lanczos).
+  for(const std::size_t size : {8, 24}) {
+    std::mt19937 rng(2);
+    std::uniform_real_distribution<double> u(0, 1);
+    std::vector<Point_2> patch, mesh;
+    for(std::size_t i = 0; i < size; ++i)
+      patch.push_back(Point_2(u(rng), u(rng)));
+    const auto place = [&](double dx, double dy, double turn) {
+      for(const Point_2& p : patch)
+        mesh.push_back(Point_2(dx + std::cos(turn) * p.x() - std::sin(turn) * p.y(),
+                               dy + std::sin(turn) * p.x() + std::cos(turn) * p.y()));
+    };
+    place(5, 0, 0);
+    place(0, 5, 1.0);
+    for(std::size_t i = 0; i < 2 * size; ++i)
+      mesh.push_back(Point_2(10 * u(rng), 10 * u(rng)));
+    std::vector<internal::Pattern_match> matches;
+    for(std::size_t i = 0; i < size; ++i) {
+      matches.push_back({i, i, 1.0, 0.0});
+      matches.push_back({i, size + i, 1.0, 0.0});
+      matches.push_back({i, 2 * size + 2 * i, 1.0, 0.0});
+    }
+    ASSERT_EQ(matches.size() > std::size_t(internal::embedding_dense_limit), size == 24);
+    const auto distance = [](const std::vector<Point_2>& points) {
+      return [&points](std::size_t a, std::size_t b) { return std::sqrt(CGAL::squared_distance(points[a], points[b])); };
+    };
+    const auto clusters = internal::cluster_matches(matches, distance(patch), distance(mesh), 0.7, 0.0, size);
+    std::size_t pure = 0;
+    for(const auto& cluster : clusters) {
+      std::set<std::size_t> copies;
+      for(std::size_t m : cluster)
+        copies.insert(matches[m].sample < size ? 0 : matches[m].sample < 2 * size ? 1 : 2);
+      if(copies.size() == 1 && *copies.begin() < 2 && cluster.size() == size)
+        ++pure;
+    }
+    EXPECT_EQ(pure, 2u) << clusters.size() << " clusters, patch of " << size;
   }
-  const auto distance = [](const std::vector<Point_2>& points) {
-    return [&points](std::size_t a, std::size_t b) { return std::sqrt(CGAL::squared_distance(points[a], points[b])); };
-  };
-  const auto clusters = internal::cluster_matches(matches, distance(patch), distance(mesh), 0.7, 0.0, 8);
-  std::size_t pure = 0;
-  for(const auto& cluster : clusters) {
-    std::set<std::size_t> copies;
-    for(std::size_t m : cluster)
-      copies.insert(matches[m].sample < 8 ? 0 : matches[m].sample < 16 ? 1 : 2);
-    if(copies.size() == 1 && *copies.begin() < 2 && cluster.size() == 8)
-      ++pure;
+}
+
+// Lanczos (above the dense limit) gives the dense solver's embedding: three blocks of random
+// positive weights, of different sizes, so that the three leading eigenvalues are apart.
+TEST(Pattern_steps, Embedding_by_Lanczos_equals_the_dense_one)
+{
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(0.5, 1);
+  std::vector<Eigen::Triplet<double>> entries;
+  const int sizes[] = {70, 50, 30};
+  int first = 0;
+  for(int size : sizes) {
+    for(int a = first; a < first + size; ++a)
+      for(int b = first; b < a; ++b)
+        if(u(rng) < 0.8) {
+          const double x = u(rng);
+          entries.emplace_back(a, b, x);
+          entries.emplace_back(b, a, x);
+        }
+    first += size;
   }
-  EXPECT_EQ(pure, 2u) << clusters.size() << " clusters";
+  Eigen::SparseMatrix<double> w(first, first);
+  w.setFromTriplets(entries.begin(), entries.end());
+  const auto dense = internal::spectral_embedding(w, first);
+  const auto lanczos = internal::spectral_embedding(w, 0);
+  ASSERT_EQ(dense.size(), lanczos.size());
+  double largest = 0, difference = 0;
+  for(std::size_t r = 0; r < dense.size(); ++r)
+    for(std::size_t c = 0; c < 3; ++c) {
+      largest = std::max(largest, std::abs(dense[r][c]));
+      difference = std::max(difference, std::abs(dense[r][c] - lanczos[r][c]));
+    }
+  EXPECT_GT(largest, 0.1);
+  EXPECT_LT(difference, 1e-8 * largest);
 }
 
 TEST(Pattern_steps, Curvatures_solved_by_QR_agree_with_CGALs_SVD_and_a_cylinder)

@@ -62,16 +62,22 @@ inline double match_consistency(double patch_distance, double mesh_distance, dou
   return std::min(expected / measured, measured / expected);
 }
 
+/// Up to this many rows, the embedding's eigenvectors come from a dense solver; above, from
+/// Lanczos iterations, whose cost does not grow as the cube of the rows.
+constexpr Eigen::Index embedding_dense_limit = 48;
+
 /// The leading eigenvectors of a symmetric matrix as rows of coordinates, scaled by the square
-/// root of their eigenvalues; dense for small matrices, Spectra's Lanczos for large sparse ones.
-inline std::vector<std::array<double, 3>> spectral_embedding(const Eigen::SparseMatrix<double>& w)
+/// root of their eigenvalues; dense for matrices of up to `dense_limit` rows, Spectra's Lanczos
+/// above (the dense solver computes every eigenvector, where three are wanted).
+inline std::vector<std::array<double, 3>> spectral_embedding(const Eigen::SparseMatrix<double>& w,
+                                                             Eigen::Index dense_limit = embedding_dense_limit)
 {
   const Eigen::Index n = w.rows();
   std::vector<std::array<double, 3>> points(std::size_t(n), std::array<double, 3>{0, 0, 0});
   Eigen::MatrixXd vectors;
   Eigen::VectorXd values;
-  constexpr Eigen::Index dense_limit = 400;
-  if(n <= dense_limit) {
+  // Lanczos needs more basis vectors than it finds eigenvectors, and no more than the rows
+  if(n <= std::max<Eigen::Index>(dense_limit, 4)) {
     Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver{Eigen::MatrixXd(w)};
     const Eigen::Index m = std::min<Eigen::Index>(3, n);
     vectors = solver.eigenvectors().rightCols(m).rowwise().reverse();
