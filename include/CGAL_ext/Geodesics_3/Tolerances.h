@@ -28,6 +28,11 @@ constexpr double saddle_angle_tolerance = 1e-6;
 /// Windows (and pieces of windows) narrower than this fraction of the mean edge length are
 /// dropped: their wedge is covered by their neighbours up to round-off.
 constexpr double min_window_length_ratio = 1e-10;
+/// Two windows of a VTP list that overlap by less than this fraction of the mean edge length
+/// are not clipped against each other: such overlaps come from windows that meet along a ray,
+/// up to the error their unfoldings accumulated; clipping is a pruning, never needed for exact
+/// distances, and on so narrow an overlap it costs more than it saves (doc/experiments.md).
+constexpr double min_clipped_overlap_ratio = 1e-6;
 /// Solving for the points where two windows give the same distance, the quadratic term is zero
 /// when below this fraction of the terms it is the difference of.
 constexpr double quadratic_cancellation_ratio = 1e-14;

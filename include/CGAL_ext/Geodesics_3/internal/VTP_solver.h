@@ -103,6 +103,7 @@ public:
     , m_list_flags(mesh.number_of_halfedges(), 0)
     , m_buckets(mesh.mean_edge_length / std::min(std::max(1., mesh.mean_anisotropy), max_anisotropy))
     , m_reset_step(settings.approximation * mesh.mean_edge_length)
+    , m_min_clipped_overlap(min_clipped_overlap_ratio * mesh.mean_edge_length)
     // What a reset keeps depends on the order in which lists were propagated: the approximation
     // always takes vertices in batches from buckets, so that run sequentially or on any number
     // of threads it gives the same distances.
@@ -621,7 +622,7 @@ private:
     task.input = Window_pool::nil;
     if(windows.empty())
       return;
-    prune_pairs(windows);
+    prune_pairs(windows, m_min_clipped_overlap);
 
     // "One angle, two sides": the window with the shortest path to the apex splits the edge.
     double best = infinity(), split = 0;
@@ -668,8 +669,10 @@ private:
       add_chain(m_mesh.opposite(Mesh_cache::next(h)), task.to_cb);
   }
 
-  // Rule 2: windows of the list are clipped against each other where they overlap.
-  static void prune_pairs(std::vector<Window>& windows)
+  // Rule 2: windows of the list are clipped against each other where they overlap by at least
+  // `min_overlap` (min_clipped_overlap_ratio): leaving two windows unclipped is safe, since a
+  // rule only ever drops rays.
+  static void prune_pairs(std::vector<Window>& windows, double min_overlap)
   {
     if(windows.size() < 2)
       return;
@@ -682,7 +685,7 @@ private:
         Window& wj = w[j];
         if(wj.b0 >= wi.b1)
           break; // sorted by where they start (skipping a pair only keeps more windows)
-        if(!(wj.b1 > wj.b0))
+        if(!(wj.b1 > wj.b0) || std::min(wi.b1, wj.b1) - wj.b0 < min_overlap)
           continue;
         Window right;
         const int outcome = clip_pair(wi, wj, &right);
@@ -761,6 +764,7 @@ private:
   double m_stop_limit = infinity();
   double m_stop_floor = 0; // see set_stop_floor_in_mesh_unit
   const double m_reset_step; // lambda h, or 0 for exact propagation
+  const double m_min_clipped_overlap; // see min_clipped_overlap_ratio
   double m_next_reset = 0;
   bool m_flushing = false; // lists are scheduled whether or not they are in the swept region
   const bool m_batched;    // take vertices from buckets, propagate lists in batches
