@@ -76,24 +76,26 @@ inline std::vector<std::array<double, 3>> spectral_embedding(const Eigen::Sparse
   std::vector<std::array<double, 3>> points(std::size_t(n), std::array<double, 3>{0, 0, 0});
   Eigen::MatrixXd vectors;
   Eigen::VectorXd values;
-  // Lanczos needs more basis vectors than it finds eigenvectors, and no more than the rows
-  if(n <= std::max<Eigen::Index>(dense_limit, 4)) {
+  // the leading (up to three) eigenpairs by the dense solver, largest first
+  const auto solve_dense = [&] {
     Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver{Eigen::MatrixXd(w)};
     const Eigen::Index m = std::min<Eigen::Index>(3, n);
     vectors = solver.eigenvectors().rightCols(m).rowwise().reverse();
     values = solver.eigenvalues().tail(m).reverse();
+  };
+  // Lanczos needs more basis vectors than it finds eigenvectors, and no more than the rows
+  if(n <= std::max<Eigen::Index>(dense_limit, 4)) {
+    solve_dense();
   } else {
     Spectra::SparseSymMatProd<double> product(w);
     Spectra::SymEigsSolver<Spectra::SparseSymMatProd<double>> solver(product, 3, std::min<Eigen::Index>(n, 24));
     solver.init();
     solver.compute(Spectra::SortRule::LargestAlge, 1000, 1e-10);
-    if(solver.info() != Spectra::CompInfo::Successful) { // fall back on the dense solver
-      Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> dense{Eigen::MatrixXd(w)};
-      vectors = dense.eigenvectors().rightCols(3).rowwise().reverse();
-      values = dense.eigenvalues().tail(3).reverse();
-    } else {
+    if(solver.info() == Spectra::CompInfo::Successful) {
       vectors = solver.eigenvectors();
       values = solver.eigenvalues();
+    } else {
+      solve_dense(); // Lanczos did not converge
     }
   }
   for(Eigen::Index c = 0; c < vectors.cols(); ++c) {
