@@ -77,6 +77,7 @@ public:
   Edge_window_store(const Mesh_cache& mesh, double min_window_length, bool requeue_trimmed)
     : m_mesh(mesh)
     , m_edge(mesh.number_of_halfedges())
+    , m_sole_source(mesh.number_of_halfedges(), no_window)
     , m_min_window_length(min_window_length)
     , m_requeue_trimmed(requeue_trimmed)
   {
@@ -95,6 +96,14 @@ public:
   }
   /// The windows of the edge of half-edge h, sorted along the reference half-edge.
   const Edge_window* windows_of_edge(int h) const { return m_edge[reference(h)].first; }
+
+  /// What `sole_source_of_edge` gives for an edge that never held a window, and for one that
+  /// held windows of two sources or more.
+  static constexpr int no_window = -1, several_sources = -2;
+  /// The source of every window the edge of half-edge h has held since the store was made, when
+  /// they all came from one; otherwise `no_window` or `several_sources`. A window beaten later
+  /// still counts: the answer is about the past, so that keeping it costs no walk.
+  int sole_source_of_edge(int h) const { return m_sole_source[std::size_t(reference(h))]; }
 
   /// A stored window in the frame of half-edge h of its edge.
   Window_geometry in_frame_of(const Edge_window& w, int h) const
@@ -204,6 +213,9 @@ public:
     drop_short(pieces);
     if(pieces.empty())
       return;
+    int& sole = m_sole_source[std::size_t(e)];
+    if(sole != source)
+      sole = sole == no_window ? source : several_sources;
 
     // The new window's pieces fill gaps between stored windows: link each where it belongs.
     before = last_before_overlap;
@@ -311,6 +323,7 @@ private:
     Edge_window* walk_start = nullptr;
   };
   std::vector<Edge_list> m_edge; // at each edge's reference half-edge
+  std::vector<int> m_sole_source; // the same; see sole_source_of_edge
   Object_pool<Edge_window> m_pool;
   const double m_min_window_length;
   const bool m_requeue_trimmed;

@@ -144,8 +144,10 @@ public:
 
 private:
   /// Whether every way into face f comes from one source: its corners' and every window's on its
-  /// edges. Then every point of the face has that nearest source (the tracer takes the best of
-  /// these ways), and the face holds no bisector. Most faces are so.
+  /// edges (every window an edge ever held: the store keeps that, and walking the lists would
+  /// cost more than the few faces this sends to `handle_triangle` for nothing). Then every point
+  /// of the face has that nearest source (the tracer takes the best of these ways), and the face
+  /// holds no bisector. Most faces are so.
   bool in_one_cell(int f) const
   {
     const int cell = label_of_vertex(m_mesh.source(3 * f));
@@ -153,9 +155,9 @@ private:
       const int h = 3 * f + k;
       if(k > 0 && label_of_vertex(m_mesh.source(h)) != cell)
         return false;
-      for(const Edge_window* w = m_windows.windows_of_edge(h); w; w = w->next)
-        if(w->source != cell)
-          return false;
+      const int sole = m_windows.sole_source_of_edge(h);
+      if(sole != cell && sole != Edge_window_store::no_window)
+        return false;
     }
     return true;
   }
