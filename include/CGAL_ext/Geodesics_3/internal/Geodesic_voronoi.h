@@ -372,8 +372,11 @@ private:
     find_changes(previous, lprevious, to, lt, out);
   }
 
-  /// Where, between `from` and `to` (both on one edge of the mesh), a window kept on that edge
-  /// starts or ends (as parameters in (0, 1) of the side); none when the side is inside a face.
+  /// Where, between `from` and `to` (both on one edge of the mesh), the nearest source may change
+  /// along the windows kept on that edge (as parameters in (0, 1) of the side): where one window
+  /// ends and the next one has another source or does not start there. Along a run of windows
+  /// of one source that follow each other, the nearest source is that one. None when the side
+  /// is inside a face.
   void edge_window_cuts(const Face_point& from, const Face_point& to, std::vector<double>& cuts) const
   {
     for(int k = 0; k < 3; ++k) {
@@ -384,12 +387,25 @@ private:
       const double s0 = from.b[std::size_t((k + 1) % 3)], s1 = to.b[std::size_t((k + 1) % 3)];
       if(s0 == s1)
         return;
+      // along the edge's reference half-edge, where the windows are sorted
+      const int e = m_windows.reference(h);
       const double length = m_mesh.length(h);
-      for(const Edge_window* w = m_windows.windows_of_edge(h); w; w = w->next) {
-        const Window_geometry g = m_windows.in_frame_of(*w, h);
-        for(double x : {g.b0, g.b1})
-          cuts.push_back((x / length - s0) / (s1 - s0));
+      auto cut_at = [&](double x) {
+        if(e != h)
+          x = length - x;
+        cuts.push_back((x / length - s0) / (s1 - s0));
+      };
+      const Edge_window* previous = nullptr;
+      for(const Edge_window* w = m_windows.windows_of_edge(h); w; previous = w, w = w->next) {
+        const bool continues = previous && previous->source == w->source && previous->geometry.b1 == w->geometry.b0;
+        if(!continues) {
+          if(previous)
+            cut_at(previous->geometry.b1);
+          cut_at(w->geometry.b0);
+        }
       }
+      if(previous)
+        cut_at(previous->geometry.b1);
       return;
     }
   }
