@@ -385,10 +385,21 @@ private:
   {
     const std::array<double, 2> q = m_mesh.point_in_frame(h, b);
     const double qx = q[0], qy = q[1];
-    const double tolerance = path_window_end_ratio * m_mesh.length(h);
+    const double length = m_mesh.length(h);
+    const double tolerance = path_window_end_ratio * length;
+    // The windows are kept in the frame of the edge's reference half-edge (x -> length - x from
+    // the other one). The ray is first tested there, with a margin far above the round-off of
+    // either frame, so that only the few windows it may cross are turned into h's frame and
+    // tested as before: the same windows pass, without a copy of each.
+    const double stored_qx = h == m_windows.reference(h) ? qx : length - qx;
     for(const Edge_window* ew = m_windows.windows_of_edge(h); ew; ew = ew->next) {
       if(ew->halfedge != h)
         continue; // enters the face on the other side
+      const Window_geometry& stored = ew->geometry;
+      const double xs = stored.sx + (stored_qx - stored.sx) * (-stored.sy) / (qy - stored.sy);
+      const double margin = tolerance + 1e-12 * (std::abs(xs) + std::abs(stored.sx) + length);
+      if(!(xs >= stored.b0 - margin && xs <= stored.b1 + margin))
+        continue;
       const Window_geometry w = m_windows.in_frame_of(*ew, h);
       const double x = w.sx + (qx - w.sx) * (-w.sy) / (qy - w.sy); // where the ray to p crosses
       if(!(x >= w.b0 - tolerance && x <= w.b1 + tolerance))
