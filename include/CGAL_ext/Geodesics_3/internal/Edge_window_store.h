@@ -110,6 +110,9 @@ public:
   {
     return h == reference(h) ? w.geometry : mirrored(w.geometry, m_mesh.length(h));
   }
+  /// A position along the edge of half-edge h, between the frames of h and of the edge's
+  /// reference half-edge (either way: the change is its own inverse).
+  double position_across_frames(double x, int h) const { return h == reference(h) ? x : m_mesh.length(h) - x; }
 
   /// See `Object_pool::use_one_slot_per_thread()`.
   std::size_t use_one_slot_per_thread(bool parallel) { return m_pool.use_one_slot_per_thread(parallel); }

@@ -387,21 +387,23 @@ private:
     const double qx = q[0], qy = q[1];
     const double length = m_mesh.length(h);
     const double tolerance = path_window_end_ratio * length;
-    // The windows are kept in the frame of the edge's reference half-edge (x -> length - x from
-    // the other one). The ray is first tested there, with a margin far above the round-off of
-    // either frame, so that only the few windows it may cross are turned into h's frame and
-    // tested as before: the same windows pass, without a copy of each.
-    const double stored_qx = h == m_windows.reference(h) ? qx : length - qx;
+    // The windows are kept in the frame of the edge's reference half-edge. The ray is first
+    // tested there, with a margin far above the round-off of either frame, so that only the few
+    // windows it may cross are turned into h's frame and tested as before: the same windows
+    // pass, without a copy of each. (From the reference half-edge, the frames are one: the
+    // crossing found there is the one the exact test reads.)
+    const bool in_stored_frame = h == m_windows.reference(h);
+    const double stored_qx = m_windows.position_across_frames(qx, h);
     for(const Edge_window* ew = m_windows.windows_of_edge(h); ew; ew = ew->next) {
       if(ew->halfedge != h)
         continue; // enters the face on the other side
       const Window_geometry& stored = ew->geometry;
-      const double xs = stored.sx + (stored_qx - stored.sx) * (-stored.sy) / (qy - stored.sy);
+      const double xs = ray_crossing(stored, stored_qx, qy);
       const double margin = tolerance + 1e-12 * (std::abs(xs) + std::abs(stored.sx) + length);
       if(!(xs >= stored.b0 - margin && xs <= stored.b1 + margin))
         continue;
       const Window_geometry w = m_windows.in_frame_of(*ew, h);
-      const double x = w.sx + (qx - w.sx) * (-w.sy) / (qy - w.sy); // where the ray to p crosses
+      const double x = in_stored_frame ? xs : ray_crossing(w, qx, qy); // where the ray to p crosses
       if(!(x >= w.b0 - tolerance && x <= w.b1 + tolerance))
         continue;
       // A ray just outside the window (round-off) is measured through the window's end, so
@@ -423,6 +425,12 @@ private:
       }
     }
     return false;
+  }
+
+  // Where the ray from w's pseudo-source to (qx, qy) (above the axis) crosses the axis.
+  static double ray_crossing(const Window_geometry& w, double qx, double qy)
+  {
+    return w.sx + (qx - w.sx) * (-w.sy) / (qy - w.sy);
   }
 
   // After crossing half-edge h at x with the window w (in h's frame), the half-edge of the face

@@ -387,13 +387,10 @@ private:
       const double s0 = from.b[std::size_t((k + 1) % 3)], s1 = to.b[std::size_t((k + 1) % 3)];
       if(s0 == s1)
         return;
-      // along the edge's reference half-edge, where the windows are sorted
-      const int e = m_windows.reference(h);
+      // the windows are sorted along the edge's reference half-edge, in whose frame they are kept
       const double length = m_mesh.length(h);
-      auto cut_at = [&](double x) {
-        if(e != h)
-          x = length - x;
-        cuts.push_back((x / length - s0) / (s1 - s0));
+      auto cut_at = [&](double stored_x) {
+        cuts.push_back((m_windows.position_across_frames(stored_x, h) / length - s0) / (s1 - s0));
       };
       const Edge_window* previous = nullptr;
       for(const Edge_window* w = m_windows.windows_of_edge(h); w; previous = w, w = w->next) {
