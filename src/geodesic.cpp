@@ -45,6 +45,10 @@
 
 #include <CLI/CLI.hpp>
 
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
+
 #include <exception>
 #include <iomanip>
 #include <iostream>
@@ -174,6 +178,12 @@ int run_path(const Path_options& options)
 int main(int argc, char** argv)
 {
   using namespace geodesic_tool;
+#if defined(__GLIBC__)
+  // Arrays of a megabyte or more each in pages of their own, given back when freed: glibc
+  // otherwise raises this threshold to the size of the largest array freed, and the arrays of
+  // the solve that come after it stay in the heap beside the freed ones (the peak memory).
+  mallopt(M_MMAP_THRESHOLD, 1 << 20);
+#endif
   CLI::App app{"Geodesic distances and shortest paths on triangle meshes", "geodesic"};
   // At most one subcommand: CLI11 then reports an unknown one as unexpected, not as missing.
   app.require_subcommand(0, 1);

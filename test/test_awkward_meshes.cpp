@@ -14,6 +14,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <numeric>
 #include <random>
 #include <sstream>
 #include <string>
@@ -478,9 +479,9 @@ TEST(MeshCache, DerivedFramesAreTheTriangleSeenFromEachSide)
     for(int k = 0; k < 3; ++k) {
       const int h = 3 * cache.cache_face(int(f)) + k;
       // the mesh's vertices are numbered in the order added, three a face
-      const Point& a = placed[f][std::size_t(cache.source(h)) % 3];
-      const Point& b = placed[f][std::size_t(cache.target(h)) % 3];
-      const Point& c = placed[f][std::size_t(cache.apex(h)) % 3];
+      const Point& a = placed[f][std::size_t(cache.mesh_vertex(cache.source(h))) % 3];
+      const Point& b = placed[f][std::size_t(cache.mesh_vertex(cache.target(h))) % 3];
+      const Point& c = placed[f][std::size_t(cache.mesh_vertex(cache.apex(h))) % 3];
       const Exact_vector ab = minus(b, a), ac = minus(c, a);
       const Exact_vector cross{{ab[1] * ac[2] - ab[2] * ac[1], ab[2] * ac[0] - ab[0] * ac[2], ab[0] * ac[1] - ab[1] * ac[0]}};
       const long double length = std::sqrt(dot(ab, ab));
@@ -532,7 +533,7 @@ TEST(MeshCache, FacesAreStoredAlongACurveAndConvertedBack)
     EXPECT_EQ(cache.mesh_face(c), int(i));
     int k = 0; // corner k is source(halfedge(f)) advanced k times
     for(auto h : CGAL::halfedges_around_face(halfedge(face_of_index[i], shuffled), shuffled))
-      EXPECT_EQ(cache.source(3 * c + k++), int(source(h, shuffled).idx())) << "face " << i;
+      EXPECT_EQ(cache.mesh_vertex(cache.source(3 * c + k++)), int(source(h, shuffled).idx())) << "face " << i;
     if(i > 0) {
       step_as_given += std::sqrt(CGAL::squared_distance(centroid(face_of_index[i - 1]), centroid(face_of_index[i])));
       step_in_cache += std::sqrt(CGAL::squared_distance(centroid(face_of_index[std::size_t(cache.mesh_face(int(i) - 1))]),
@@ -558,6 +559,68 @@ TEST(MeshCache, FacesAreStoredAlongACurveAndConvertedBack)
   EXPECT_TRUE(agrees(solve(shuffled, std::vector<Face_location>{{in_shuffled, third}}),
                      solve(original, std::vector<Face_location>{{Face(100), third}}), bbox_diagonal(original), 1e-14,
                      "a face-point source on the shuffled faces against the faces as read"));
+}
+
+// The cache numbers the caller's vertices in the order its faces name them: on a mesh whose
+// vertices are shuffled, vertices near in the cache are near on the surface, the two maps are
+// inverse, each cache vertex sits at its caller's vertex, and the distances (given back by the
+// caller's vertices) are those of the mesh as read, from a vertex source and with stop vertices.
+TEST(MeshCache, VerticesAreNumberedAlongTheFacesAndConvertedBack)
+{
+  const Mesh& original = test_mesh("elephant");
+  const std::size_t n = num_vertices(original);
+  std::vector<int> shuffled_index(n);
+  std::iota(shuffled_index.begin(), shuffled_index.end(), 0);
+  std::shuffle(shuffled_index.begin(), shuffled_index.end(), std::mt19937(5));
+  std::vector<Point> points(n);
+  for(Vertex v : vertices(original))
+    points[std::size_t(shuffled_index[v.idx()])] = original.point(v);
+  std::vector<Triangle> triangles;
+  for(Face f : faces(original)) {
+    Triangle t = corners_of(original, f);
+    for(int& c : t)
+      c = shuffled_index[std::size_t(c)];
+    triangles.push_back(t);
+  }
+  const Mesh shuffled = mesh_from_soup(points, triangles);
+  ASSERT_EQ(num_vertices(shuffled), n);
+
+  CGAL_ext::Geodesics_3::internal::Mesh_cache cache;
+  CGAL_ext::Geodesics_3::internal::build_mesh_cache(shuffled, get(CGAL::vertex_point, shuffled),
+                                                    get(CGAL::vertex_index, shuffled), get(CGAL::face_index, shuffled),
+                                                    cache);
+  double step_in_cache = 0, step_as_given = 0;
+  for(std::size_t i = 0; i < n; ++i) {
+    const int c = cache.cache_vertex(int(i));
+    ASSERT_GE(c, 0);
+    ASSERT_LT(std::size_t(c), n);
+    EXPECT_EQ(cache.mesh_vertex(c), int(i));
+    const Point& p = shuffled.point(Vertex(std::uint32_t(i)));
+    EXPECT_EQ(cache.position[std::size_t(c)][0], p.x()) << "vertex " << i;
+    EXPECT_EQ(cache.position[std::size_t(c)][2], p.z()) << "vertex " << i;
+    if(i > 0) {
+      step_as_given += std::sqrt(CGAL::squared_distance(shuffled.point(Vertex(std::uint32_t(i - 1))), p));
+      step_in_cache += std::sqrt(CGAL::squared_distance(
+        shuffled.point(Vertex(std::uint32_t(cache.mesh_vertex(int(i) - 1)))),
+        shuffled.point(Vertex(std::uint32_t(cache.mesh_vertex(int(i)))))));
+    }
+  }
+  EXPECT_LT(step_in_cache, 0.2 * step_as_given);
+
+  const Vertex source_as_read(100), source_shuffled{std::uint32_t(shuffled_index[100])};
+  const std::vector<double> as_read = solve(original, source_as_read);
+  const std::vector<double> on_shuffled = solve(shuffled, source_shuffled);
+  const std::vector<Vertex> stops{Vertex(std::uint32_t(shuffled_index[7])), Vertex(std::uint32_t(shuffled_index[9]))};
+  const std::vector<double> stopped = solve(shuffled, source_shuffled, params::stop_vertices(stops));
+  const double diagonal = bbox_diagonal(original);
+  for(std::size_t v = 0; v < n; ++v) {
+    const std::size_t s = std::size_t(shuffled_index[v]);
+    EXPECT_NEAR(on_shuffled[s], as_read[v], 1e-14 * diagonal) << "vertex " << v;
+    if(stopped[s] < inf)
+      EXPECT_NEAR(stopped[s], as_read[v], 1e-14 * diagonal) << "vertex " << v;
+  }
+  for(const Vertex& v : stops)
+    EXPECT_LT(stopped[v.idx()], inf) << "stop vertex " << v.idx();
 }
 
 TEST(IsolatedVertex, IsUnreachedAndCannotBeTheOnlySource)

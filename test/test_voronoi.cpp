@@ -140,7 +140,7 @@ TEST(Geodesic_voronoi, the_way_a_point_is_reached_gives_its_distance)
   internal::MMP_solver solver(cache, settings, false);
   for(Vertex v : spread_vertices(m, 12, 5)) {
     internal::Source_point s;
-    s.vertex = int(v.idx());
+    s.vertex = cache.cache_vertex(int(v.idx()));
     solver.add_source(s);
   }
   internal::Source_point in_face;

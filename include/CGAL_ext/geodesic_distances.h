@@ -163,14 +163,22 @@ void geodesic_distances(const TriangleMesh& tm, VertexDistanceMap vertex_distanc
   }
 
   internal::Mesh_setup<TriangleMesh, Vertex_point_map> mesh(tm, np);
-  internal::VTP_solver solver(mesh.cache(), settings, parallel);
+  std::vector<internal::Source_point> points;
   for(const internal::Source_point& s : mesh.source_points(sources))
-    solver.add_source(s);
+    points.push_back(internal::normalized_source(mesh.cache(), s));
+  std::vector<int> stops;
   if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::stop_vertices_t>::value) {
     for(auto v : parameters::get_parameter(np, internal_np::stop_vertices))
-      solver.add_stop_vertex(mesh.index(v));
+      stops.push_back(mesh.index(v));
   }
-  mesh.release_positions(); // the sources are placed: distances need no more
+  // The sources are placed: distances need no more. Freed before the solver's arrays are made,
+  // so that the two never take memory together.
+  mesh.release_positions();
+  internal::VTP_solver solver(mesh.cache(), settings, parallel);
+  for(const internal::Source_point& s : points)
+    solver.add_normalized_source(s);
+  for(int v : stops)
+    solver.add_stop_vertex(v);
   const double seconds_setup = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   internal::run_solver<parallel>(solver, settings.number_of_threads);
   mesh.write_vertex_distances(vertex_distance_map, solver.distances());

@@ -131,7 +131,8 @@ geodesic_voronoi_diagram(const TriangleMesh& tm, const Sources& sources,
 
   Diagram diagram;
   const std::vector<int>& nearest = solver.nearest_sources();
-  for(std::size_t v = 0; v < cache.number_of_mesh_vertices; ++v) {
+  for(std::size_t i = 0; i < cache.number_of_mesh_vertices; ++i) {
+    const std::size_t v = std::size_t(cache.cache_vertex(int(i)));
     diagram.vertex_cell.push_back(nearest[v] < 0 ? no_source : std::size_t(nearest[v]));
     diagram.vertex_distance.push_back(mesh.to_mesh_unit(solver.distances()[v]));
   }

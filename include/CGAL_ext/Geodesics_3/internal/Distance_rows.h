@@ -27,14 +27,33 @@ typedef std::pair<std::size_t, double> Row_entry;
 /// The memory the rows of a batch may take (`for_each_row`).
 constexpr std::size_t row_budget_bytes = std::size_t(64) << 20;
 
+/// What the `add_stops` of `Row_solvers::for_each_row_stopping` may set on the solver of a row:
+/// stop vertices, given by mesh vertex index, and the stop floor.
+class Row_stops
+{
+public:
+  Row_stops(VTP_solver& solver, const Mesh_cache& mesh) : m_solver(solver), m_mesh(mesh) {}
+  /// (an index out of range is passed on, for the solver's check to name it)
+  void add_stop_vertex(std::size_t mesh_vertex)
+  {
+    m_solver.add_stop_vertex(mesh_vertex < m_mesh.number_of_mesh_vertices ? m_mesh.cache_vertex(int(mesh_vertex))
+                                                                          : int(mesh_vertex));
+  }
+  void set_stop_floor_in_mesh_unit(double floor) { m_solver.set_stop_floor_in_mesh_unit(floor); }
+
+private:
+  VTP_solver& m_solver;
+  const Mesh_cache& m_mesh;
+};
+
 /// The `add_stops` of `Row_solvers::for_each_row_stopping` that gives every row the stop vertices
 /// `stop` (mesh vertex indices), kept by reference.
 template <class StopVertices>
 auto same_stops_for_every_row(const StopVertices& stop)
 {
-  return [&stop](std::size_t, VTP_solver& solver) {
+  return [&stop](std::size_t, Row_stops& stops) {
     for(auto v : stop)
-      solver.add_stop_vertex(int(v));
+      stops.add_stop_vertex(std::size_t(v));
   };
 }
 
@@ -102,7 +121,8 @@ public:
             solver->reset();
             solver->set_max_distance_in_mesh_unit(max_distance);
             solver->add_source(points[first + j]);
-            add_stops(first + j, *solver);
+            Row_stops stops(*solver, m_mesh.cache());
+            add_stops(first + j, stops);
             solver->run();
             make_row(*solver, m_mesh, rows[j]);
           } catch(...) {
@@ -159,9 +179,10 @@ void make_sparse_row(const VTP_solver& solver, const Setup& mesh, std::vector<Ro
 {
   const std::vector<double>& d = solver.distances();
   row.clear();
+  const Mesh_cache& cache = mesh.cache();
   for(int v : solver.reached_vertices())
-    if(std::size_t(v) < mesh.cache().number_of_mesh_vertices && d[std::size_t(v)] < VTP_solver::infinity())
-      row.emplace_back(std::size_t(v), mesh.to_mesh_unit(d[std::size_t(v)]));
+    if(std::size_t(v) < cache.number_of_mesh_vertices && d[std::size_t(v)] < VTP_solver::infinity())
+      row.emplace_back(std::size_t(cache.mesh_vertex(v)), mesh.to_mesh_unit(d[std::size_t(v)]));
   std::sort(row.begin(), row.end());
 }
 
@@ -173,10 +194,11 @@ void distance_rows(const TriangleMesh& tm, const Sources& sources, RowFunction& 
     tm, sources, np,
     [](const VTP_solver& solver, const auto& mesh, std::vector<double>& r) {
       const std::vector<double>& d = solver.distances();
-      r.assign(mesh.cache().number_of_mesh_vertices, VTP_solver::infinity());
+      const Mesh_cache& cache = mesh.cache();
+      r.assign(cache.number_of_mesh_vertices, VTP_solver::infinity());
       for(int v : solver.reached_vertices())
         if(std::size_t(v) < r.size())
-          r[std::size_t(v)] = mesh.to_mesh_unit(d[std::size_t(v)]);
+          r[std::size_t(cache.mesh_vertex(v))] = mesh.to_mesh_unit(d[std::size_t(v)]);
     },
     row);
 }

@@ -144,12 +144,14 @@ private:
   struct Candidate
   {
     double distance;
-    int vertex;
+    int vertex;      // the cache's index
+    int mesh_vertex; // the caller's, which decides ties
     bool operator<(const Candidate& c) const
     {
-      return distance < c.distance || (distance == c.distance && vertex > c.vertex);
+      return distance < c.distance || (distance == c.distance && mesh_vertex > c.mesh_vertex);
     }
   };
+  Candidate candidate(double distance, int v) const { return Candidate{distance, v, m_mesh.mesh_vertex(v)}; }
 
   static void start_run(VTP_solver& solver, int v, int index)
   {
@@ -246,12 +248,12 @@ private:
     if(m_samples.size() == 1 || m_heap.size() > 4 * n) {
       m_heap.clear();
       for(std::size_t u = 0; u < n; ++u)
-        m_heap.push_back(Candidate{d[u], int(u)});
+        m_heap.push_back(candidate(d[u], int(u)));
       std::make_heap(m_heap.begin(), m_heap.end());
     } else {
       for(int u : lowered)
         if(std::size_t(u) < n)
-          push_candidate(Candidate{d[std::size_t(u)], u});
+          push_candidate(candidate(d[std::size_t(u)], u));
     }
     while(m_heap.front().distance != d[std::size_t(m_heap.front().vertex)])
       pop_candidate();
@@ -273,18 +275,18 @@ private:
   Geodesic_statistics m_statistics;
 };
 
-/// The default first sample: the vertex farthest from the first vertex in a face (vertex 0 on
-/// a mesh without isolated vertices).
+/// The default first sample: the vertex farthest from the caller's first vertex in a face
+/// (vertex 0 on a mesh without isolated vertices).
 template <bool parallel>
 int default_first_sample(const Mesh_cache& mesh, const Solver_settings& settings)
 {
-  int start = 0;
-  while(std::size_t(start) < mesh.number_of_mesh_vertices && is_isolated_point(mesh, start))
-    ++start;
-  if(std::size_t(start) == mesh.number_of_mesh_vertices)
+  int first = 0;
+  while(std::size_t(first) < mesh.number_of_mesh_vertices && is_isolated_point(mesh, mesh.cache_vertex(first)))
+    ++first;
+  if(std::size_t(first) == mesh.number_of_mesh_vertices)
     throw Geodesic_error("every vertex is in no face: there is no surface to sample");
   Farthest_point_sampler<parallel> from_start(mesh, settings, false);
-  from_start.add_sample(start);
+  from_start.add_sample(mesh.cache_vertex(first));
   return from_start.farthest_vertex();
 }
 

@@ -89,9 +89,12 @@ public:
       m_vertex_of_index[std::size_t(get(vim, v))] = v;
     for(face_descriptor f : faces(tm))
       m_face_of_index[std::size_t(get(fim, f))] = f;
-    m_vertex_index = [vim](vertex_descriptor v) { return int(get(vim, v)); };
     const Mesh_cache* cache = m_cache.get();
     // (an index out of range is passed on, for the check of the source or target to name it)
+    m_vertex_index = [vim, cache](vertex_descriptor v) {
+      const long long i = static_cast<long long>(get(vim, v));
+      return i >= 0 && std::size_t(i) < cache->number_of_mesh_vertices ? cache->cache_vertex(int(i)) : int(i);
+    };
     m_face_index = [fim, cache](face_descriptor f) {
       const long long i = static_cast<long long>(get(fim, f));
       return i >= 0 && std::size_t(i) < cache->number_of_mesh_faces ? cache->cache_face(int(i)) : int(i);
@@ -107,6 +110,7 @@ public:
   /// Seconds taken to build the cache and check the mesh.
   double seconds() const { return m_seconds; }
 
+  /// The cache's index of vertex v (see `Mesh_cache::cache_vertex`).
   int index(vertex_descriptor v) const { return m_vertex_index(v); }
   /// The cache's index of face f (see `Mesh_cache::cache_face`).
   int index(face_descriptor f) const { return m_face_index(f); }
@@ -154,20 +158,26 @@ public:
     return points;
   }
 
-  /// Writes `values[i]` to the vertex of index i (copies of a vertex have its value).
+  /// Calls `f(vertex, i)` for each vertex of the mesh and its cache index i, in the cache's
+  /// order (which needs no map from the caller's indices: see `release_positions`).
+  template <class Function>
+  void for_each_vertex(Function f) const
+  {
+    for(std::size_t i = 0; i < m_vertex_of_index.size(); ++i)
+      f(m_vertex_of_index[std::size_t(m_cache->mesh_vertex(int(i)))], i);
+  }
+  /// Writes `values[i]` to the vertex of cache index i (copies of a vertex have its value).
   template <class VertexValueMap, class T>
   void write_vertex_values(VertexValueMap map, const std::vector<T>& values) const
   {
-    for(std::size_t i = 0; i < m_vertex_of_index.size(); ++i)
-      put(map, m_vertex_of_index[i], values[i]);
+    for_each_vertex([&](vertex_descriptor v, std::size_t i) { put(map, v, values[i]); });
   }
   /// Writes distances in the cache's unit to the vertices, in the mesh's unit.
   template <class VertexDistanceMap>
   void write_vertex_distances(VertexDistanceMap map, const std::vector<double>& distances) const
   {
     const double unit = m_cache->unit;
-    for(std::size_t i = 0; i < m_vertex_of_index.size(); ++i)
-      put(map, m_vertex_of_index[i], distances[i] * unit);
+    for_each_vertex([&](vertex_descriptor v, std::size_t i) { put(map, v, distances[i] * unit); });
   }
   /// Writes the nearest source of every vertex (-1 in `nearest`) as the map's value type, with
   /// `no_source` for -1.
@@ -175,8 +185,9 @@ public:
   void write_vertex_sources(VertexSourceMap map, const std::vector<int>& nearest) const
   {
     typedef typename boost::property_traits<VertexSourceMap>::value_type Index;
-    for(std::size_t i = 0; i < m_vertex_of_index.size(); ++i)
-      put(map, m_vertex_of_index[i], nearest[i] < 0 ? static_cast<Index>(no_source) : static_cast<Index>(nearest[i]));
+    for_each_vertex([&](vertex_descriptor v, std::size_t i) {
+      put(map, v, nearest[i] < 0 ? static_cast<Index>(no_source) : static_cast<Index>(nearest[i]));
+    });
   }
   /// A length or coordinate in the cache's unit, in the mesh's.
   double to_mesh_unit(double d) const { return d * m_cache->unit; }

@@ -100,7 +100,13 @@ struct Mesh_cache
   // Vertices [0, number_of_mesh_vertices) are the caller's; a non-manifold vertex keeps its first
   // fan, and each other fan gets a copy numbered from number_of_mesh_vertices on.
   std::size_t number_of_mesh_vertices = 0;
-  std::vector<std::int32_t> mesh_vertex_of_copy; // per copy
+  std::vector<std::int32_t> mesh_vertex_of_copy; // per copy: the caller's vertex
+  // The caller's vertices are numbered in the order the cache's faces first name them
+  // (`order_vertices`), so that the vertices of nearby faces are near in memory too: caller's
+  // vertex i is cache vertex `cache_vertex(i)`, and cache vertex v below number_of_mesh_vertices
+  // is caller's vertex `mesh_vertex(v)`.
+  std::vector<std::int32_t> cache_vertex_of_mesh_vertex; // per caller's vertex
+  std::vector<std::int32_t> mesh_vertex_of_cache_vertex; // per cache vertex below number_of_mesh_vertices
   // Glued vertices are one point of the surface (the copies of a non-manifold vertex, and the
   // vertices the caller says are one point): per vertex, the next one of its group, in a cycle.
   // Empty when no vertex is glued.
@@ -139,8 +145,11 @@ struct Mesh_cache
   /// The caller's vertex that vertex `v` of the cache is (itself, or the vertex it is a copy of).
   int mesh_vertex(int v) const
   {
-    return std::size_t(v) < number_of_mesh_vertices ? v : mesh_vertex_of_copy[std::size_t(v) - number_of_mesh_vertices];
+    return std::size_t(v) < number_of_mesh_vertices ? mesh_vertex_of_cache_vertex[std::size_t(v)]
+                                                    : mesh_vertex_of_copy[std::size_t(v) - number_of_mesh_vertices];
   }
+  /// The cache vertex that the caller's vertex `mesh_v` is (the fan it keeps, if it was split).
+  int cache_vertex(int mesh_v) const { return cache_vertex_of_mesh_vertex[std::size_t(mesh_v)]; }
   /// The caller's face that face `f` of the cache is, or lies in.
   int mesh_face(int f) const
   {
@@ -152,10 +161,15 @@ struct Mesh_cache
   bool is_face_changed(int f) const { return !face_state.empty() && face_state[std::size_t(f)] != 0; }
   bool is_face_removed(int f) const { return !face_state.empty() && (face_state[std::size_t(f)] & face_removed); }
 
-  /// Frees the positions, for a caller that wants distances only and has placed its sources:
+  /// Frees the positions and the map from the caller's vertices (`cache_vertex`), for a caller
+  /// that wants distances only and has placed its sources and stop vertices:
   /// the propagation reads the frames, and only the placing of face points, paths and the
   /// Voronoi diagram's points read positions after `finish()`.
-  void release_positions() { std::vector<std::array<double, 3>>().swap(position); }
+  void release_positions()
+  {
+    std::vector<std::array<double, 3>>().swap(position);
+    std::vector<std::int32_t>().swap(cache_vertex_of_mesh_vertex);
+  }
 
   /// A point of cache face `f`, one of the caller's (`cache_face(i)`; barycentric coordinates `b`
   /// in its corner order, which is the caller's), as a point of a live face of the cache: itself
@@ -282,6 +296,7 @@ private:
   void split_face_at(int y, int c);
   bool compute_frames(); // false if a face is degenerate
   void split_non_manifold_vertices(const std::vector<std::int32_t>& corner_count);
+  void order_vertices();
   void glue_vertices(const std::vector<std::vector<int>>& groups);
   void check_glued_groups(const std::vector<std::vector<int>>& groups) const;
   void compute_vertex_flags();
@@ -380,6 +395,68 @@ inline void Mesh_cache::finish(const std::vector<std::vector<int>>& glued_groups
   compute_vertex_flags();
   // the pseudo-source flags (from the angle sums) are all the solvers need of the corner angles
   std::vector<double>().swap(corner_angle);
+  order_vertices();
+}
+
+// Renumbers the caller's vertices (not the copies, numbered after them) in the order in which
+// the faces, already in the order of a curve, first name them; vertices in no face come last, in
+// the caller's order. Every vertex index stored so far is the caller's and is renumbered here:
+// the messages of the checks above name the caller's vertices.
+inline void Mesh_cache::order_vertices()
+{
+  const std::size_t n = number_of_mesh_vertices;
+  constexpr std::int32_t unnumbered = -1;
+  cache_vertex_of_mesh_vertex.assign(n, unnumbered);
+  mesh_vertex_of_cache_vertex.resize(n);
+  std::int32_t next_number = 0;
+  auto number = [&](std::size_t v) {
+    if(v < n && cache_vertex_of_mesh_vertex[v] == unnumbered) {
+      cache_vertex_of_mesh_vertex[v] = next_number;
+      mesh_vertex_of_cache_vertex[std::size_t(next_number++)] = std::int32_t(v);
+    }
+  };
+  for(std::int32_t v : corner_vertex)
+    number(std::size_t(v));
+  for(std::size_t v = 0; v < n; ++v)
+    number(v);
+  auto renumber = [&](std::int32_t& v) {
+    if(v >= 0 && std::size_t(v) < n)
+      v = cache_vertex_of_mesh_vertex[std::size_t(v)];
+  };
+  // In place, cycle by cycle of the permutation: a copy of the arrays, freed at once, would
+  // still raise the tool's peak memory (the allocator keeps it).
+  std::vector<bool> moved(n);
+  auto move_values = [&](auto& per_vertex) {
+    moved.assign(n, false);
+    for(std::size_t start = 0; start < n; ++start) {
+      if(moved[start])
+        continue;
+      auto carried = per_vertex[start];
+      for(std::size_t v = start;;) {
+        moved[v] = true;
+        const std::size_t to = std::size_t(cache_vertex_of_mesh_vertex[v]);
+        if(to == start) {
+          per_vertex[to] = carried;
+          break;
+        }
+        std::swap(carried, per_vertex[to]);
+        v = to;
+      }
+    }
+  };
+  for(std::int32_t& v : corner_vertex)
+    renumber(v);
+  for(std::int32_t& v : mesh_corner_vertex)
+    renumber(v);
+  move_values(position);
+  move_values(first_outgoing);
+  move_values(is_border_vertex);
+  move_values(is_pseudo_source);
+  if(!next_glued.empty()) {
+    for(std::int32_t& v : next_glued)
+      renumber(v);
+    move_values(next_glued);
+  }
 }
 
 inline bool Mesh_cache::compute_frames()
@@ -787,8 +864,8 @@ inline void scale_to_unit(Mesh_cache& cache)
       p[i] = std::ldexp(p[i], -exponent);
 }
 
-/// Builds the cache of `tm`. Vertex `v` of `tm` becomes index `get(vim, v)`, face `f` becomes
-/// index `cache_face(get(fim, f))`. Throws `Geodesic_error` for an empty mesh, a face that is not a triangle,
+/// Builds the cache of `tm`. Vertex `v` of `tm` becomes index `cache_vertex(get(vim, v))`, face
+/// `f` becomes index `cache_face(get(fim, f))`. Throws `Geodesic_error` for an empty mesh, a face that is not a triangle,
 /// a non-finite coordinate, or degenerate triangles that cannot be removed.
 template <class TriangleMesh, class VertexPointMap, class VertexIndexMap, class FaceIndexMap>
 void build_mesh_cache(const TriangleMesh& tm, VertexPointMap vpm, VertexIndexMap vim,

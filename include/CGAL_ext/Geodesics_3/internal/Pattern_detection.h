@@ -422,7 +422,7 @@ private:
 
   // A descent over vertices for several walkers at once (the patch's centroid, the instances'
   // centres). Walker w starts at start[w]; every step evaluates the vertices tried, one local
-  // row each (within `radius`, and until the stop vertices that `add_stops(w, solver)` gives
+  // row each (within `radius`, and until the stop vertices that `add_stops(w, stops)` gives
   // walker w's rows are settled), in one batch:
   // first the starts, then the unvisited neighbours of each moving walker's best vertex that
   // `may_visit(w, vertex)` lets in. `cost(w, vertex, row)` is a vertex's cost; a walker stops
@@ -448,7 +448,7 @@ private:
         sources.push_back(t.second);
       std::vector<bool> moved(n, false);
       for_each_local_row_stopping(
-        sources, radius, [&](std::size_t r, VTP_solver& solver) { add_stops(tried[r].first, solver); },
+        sources, radius, [&](std::size_t r, Row_stops& stops) { add_stops(tried[r].first, stops); },
         [&](std::size_t r, const Row& entries) {
           const auto [w, v] = tried[r];
           const double c = cost(w, v, entries);
@@ -1084,11 +1084,11 @@ private:
       for(std::size_t q : m_instances[a].correspondence.image)
         if(q != Pattern_correspondence::unmapped)
           image_vertices[a].push_back(m_sample_vertex[q]);
-    const auto add_stops = [&](std::size_t w, VTP_solver& solver) {
+    const auto add_stops = [&](std::size_t w, Row_stops& stops) {
       const double scale = m_scales[m_instances[w + 1].scale_step];
       for(std::size_t v : image_vertices[w + 1])
-        solver.add_stop_vertex(int(v));
-      solver.set_stop_floor_in_mesh_unit(std::max(signature_radius, 2 * m_spacing) * scale);
+        stops.add_stop_vertex(v);
+      stops.set_stop_floor_in_mesh_unit(std::max(signature_radius, 2 * m_spacing) * scale);
     };
     const auto placed = descend(
       start, reach, add_stops,

@@ -30,6 +30,9 @@ public:
   /// Adds a source (checked; a face point on a corner becomes that vertex); its index is the
   /// number of sources added before it.
   void add_source(const Source_point& s) { m_sources.push_back(normalized_source(m_mesh, s)); }
+  /// The same for a source that `normalized_source` gave (the cache's positions, which it may
+  /// read, may have been freed since).
+  void add_normalized_source(const Source_point& s) { m_sources.push_back(s); }
 
   const Mesh_cache& mesh() const { return m_mesh; }
   const std::vector<Source_point>& sources() const { return m_sources; }

@@ -45,7 +45,7 @@ inline void check_has_sources(const Mesh_cache& m, const std::vector<Source_poin
     throw Geodesic_error("no source was given");
   auto isolated = [&](const Source_point& s) { return s.vertex >= 0 && is_isolated_point(m, s.vertex); };
   if(std::all_of(sources.begin(), sources.end(), isolated))
-    throw Geodesic_error("source vertex " + std::to_string(sources.front().vertex) +
+    throw Geodesic_error("source vertex " + std::to_string(m.mesh_vertex(sources.front().vertex)) +
                          " is in no face (an isolated vertex): no surface to measure distances on");
 }
 
