@@ -217,7 +217,7 @@ CGAL_EXT_NOINLINE inline int equal_distance_points(const Window_geometry& w0, co
   const double alpha = 2 * (w0.sx - w1.sx);
   const double beta = w1.sx * w1.sx + w1.sy * w1.sy - w0.sx * w0.sx - w0.sy * w0.sy - delta * delta;
   int n = 0;
-  auto keep = [&](double x) {
+  auto keep = [&](double x) CGAL_EXT_ALWAYS_INLINE {
     // |x - s1| = |x - s0| + delta needs |x - s0| + delta >= 0 (true when delta >= 0), and then
     // alpha x + beta has the sign of delta; both are checked (the pieces' winners are checked
     // again at their midpoints)
