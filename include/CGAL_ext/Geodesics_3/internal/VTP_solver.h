@@ -213,6 +213,7 @@ public:
     check_has_sources(m_mesh, m_sources);
     m_main_slot = m_pool.use_one_slot_per_thread(m_parallel);
     m_list_windows.resize(m_pool.number_of_slots());
+    m_sort_buffers.resize(m_pool.number_of_slots());
     for(const Source_point& s : m_sources) {
       const int index = m_first_source_index + int(&s - m_sources.data());
       if(s.vertex >= 0) {
@@ -622,6 +623,7 @@ private:
     task.input = Window_pool::nil;
     if(windows.empty())
       return;
+    sort_by_start(windows, m_sort_buffers[slot]);
     prune_pairs(windows, m_min_clipped_overlap);
 
     // "One angle, two sides": the window with the shortest path to the apex splits the edge.
@@ -669,14 +671,13 @@ private:
       add_chain(m_mesh.opposite(Mesh_cache::next(h)), task.to_cb);
   }
 
-  // Rule 2: windows of the list are clipped against each other where they overlap by at least
-  // `min_overlap` (min_clipped_overlap_ratio): leaving two windows unclipped is safe, since a
-  // rule only ever drops rays.
+  // Rule 2: windows of the list (sorted by where they start) are clipped against each other
+  // where they overlap by at least `min_overlap` (min_clipped_overlap_ratio): leaving two
+  // windows unclipped is safe, since a rule only ever drops rays.
   static void prune_pairs(std::vector<Window>& windows, double min_overlap)
   {
     if(windows.size() < 2)
       return;
-    sort_by_start(windows);
     Window* w = windows.data(); // and n: refreshed after a split adds a window
     std::size_t n = windows.size();
     for(std::size_t i = 0; i < n; ++i) {
@@ -708,30 +709,44 @@ private:
   // The order of a list's windows: by where they start.
   static bool starts_before(const Window& a, const Window& b) { return a.b0 < b.b0; }
 
-  // Sorts a list's windows by where they start. A list is a few chains of children, each in
-  // the order of its parent list, that overlap little: an insertion sort moves few windows. Past
-  // a budget of moves (lists of many interleaved chains), the list is sorted the general way.
-  static void sort_by_start(std::vector<Window>& windows)
+  // What sorting a list needs beside it, a thread's own.
+  struct Sort_buffers
+  {
+    std::vector<std::size_t> run_starts;
+    std::vector<Window> merged;
+  };
+
+  // Sorts a list's windows by where they start. A list is a few chains of children, each
+  // sorted (in the order of its parent list): the runs of windows that start in order are
+  // merged pairwise, in passes between the list and `merged`, which costs a copy of the list a
+  // pass rather than a move per pair out of order (lists of a few long chains that interleave
+  // have many). Stable, as the order of equal starts is the list's.
+  static void sort_by_start(std::vector<Window>& windows, Sort_buffers& buffers)
   {
     const std::size_t n = windows.size();
-    std::size_t moves_left = max_moves_per_window * n;
-    for(std::size_t i = 1; i < n; ++i) {
-      if(!starts_before(windows[i], windows[i - 1]))
-        continue;
-      const Window w = windows[i];
-      std::size_t j = i;
-      do {
-        windows[j] = windows[j - 1];
-        --j;
-      } while(j > 0 && starts_before(w, windows[j - 1]) && --moves_left > 0);
-      windows[j] = w;
-      if(moves_left == 0) {
-        std::sort(windows.begin(), windows.end(), starts_before);
-        return;
+    std::vector<std::size_t>& runs = buffers.run_starts; // then the end
+    runs.assign(1, 0);
+    for(std::size_t i = 1; i < n; ++i)
+      if(starts_before(windows[i], windows[i - 1]))
+        runs.push_back(i);
+    if(runs.size() == 1)
+      return;
+    runs.push_back(n);
+    buffers.merged.resize(n);
+    while(runs.size() > 2) {
+      std::size_t kept = 0;
+      for(std::size_t r = 0; r + 1 < runs.size(); r += 2) {
+        const std::size_t a = runs[r], m = runs[r + 1], b = r + 2 < runs.size() ? runs[r + 2] : m;
+        std::merge(windows.begin() + std::ptrdiff_t(a), windows.begin() + std::ptrdiff_t(m),
+                   windows.begin() + std::ptrdiff_t(m), windows.begin() + std::ptrdiff_t(b),
+                   buffers.merged.begin() + std::ptrdiff_t(a), starts_before);
+        runs[kept++] = a;
       }
+      runs[kept++] = n;
+      runs.resize(kept);
+      windows.swap(buffers.merged);
     }
   }
-  static constexpr std::size_t max_moves_per_window = 64;
 
   // Chunks of a fixed size: lists are small units of work, but uneven.
   static constexpr std::size_t list_grain = 8;
@@ -751,6 +766,7 @@ private:
   List_task m_task_one;
   std::vector<List_task> m_tasks;
   std::vector<std::vector<Window>> m_list_windows; // per pool slot: the list being propagated
+  std::vector<Sort_buffers> m_sort_buffers;        // per pool slot
   Window_pool m_pool;
   std::size_t m_main_slot = 0; // the pool slot of the thread running run()
   std::vector<int> m_stop_vertices;
