@@ -724,13 +724,18 @@ private:
   static void sort_by_start(std::vector<Window>& windows, Sort_buffers& buffers)
   {
     const std::size_t n = windows.size();
+    std::size_t i = 1;
+    while(i < n && !starts_before(windows[i], windows[i - 1]))
+      ++i;
+    if(i >= n)
+      return; // one run
     std::vector<std::size_t>& runs = buffers.run_starts; // then the end
-    runs.assign(1, 0);
-    for(std::size_t i = 1; i < n; ++i)
+    runs.clear();
+    runs.push_back(0);
+    runs.push_back(i);
+    for(++i; i < n; ++i)
       if(starts_before(windows[i], windows[i - 1]))
         runs.push_back(i);
-    if(runs.size() == 1)
-      return;
     runs.push_back(n);
     buffers.merged.resize(n);
     while(runs.size() > 2) {
