@@ -212,8 +212,7 @@ public:
     const auto start = Clock::now();
     check_has_sources(m_mesh, m_sources);
     m_main_slot = m_pool.use_one_slot_per_thread(m_parallel);
-    m_list_windows.resize(m_pool.number_of_slots());
-    m_sort_buffers.resize(m_pool.number_of_slots());
+    m_list_buffers.resize(m_pool.number_of_slots());
     for(const Source_point& s : m_sources) {
       const int index = m_first_source_index + int(&s - m_sources.data());
       if(s.vertex >= 0) {
@@ -597,12 +596,12 @@ private:
   // Takes the windows of the task's list across the face of its half-edge. Reads the mesh and
   // the vertex distances; writes only `task` and what belongs to `slot` (the calling thread's):
   // the pool's slot, which takes back the list's windows and gives the children, and the
-  // slot's buffer of the list's windows (one a thread rather than one a task, so that it stays in
-  // the thread's cache from list to list).
+  // slot's `List_buffers`.
   void propagate(List_task& task, std::size_t slot)
   {
     const int h = task.halfedge;
-    std::vector<Window>& windows = m_list_windows[slot];
+    List_buffers& buffers = m_list_buffers[slot];
+    std::vector<Window>& windows = buffers.windows;
     task.to_ac.clear();
     task.to_cb.clear();
     task.apex_distance = infinity();
@@ -623,7 +622,7 @@ private:
     task.input = Window_pool::nil;
     if(windows.empty())
       return;
-    sort_by_start(windows, m_sort_buffers[slot]);
+    sort_by_start(buffers);
     prune_pairs(windows, m_min_clipped_overlap);
 
     // "One angle, two sides": the window with the shortest path to the apex splits the edge.
@@ -709,20 +708,24 @@ private:
   // The order of a list's windows: by where they start.
   static bool starts_before(const Window& a, const Window& b) { return a.b0 < b.b0; }
 
-  // What sorting a list needs beside it, a thread's own.
-  struct Sort_buffers
+  // A thread's buffers for the list it propagates (one a thread rather than one a task, so that
+  // they stay in the thread's cache from list to list): the list's windows, and what sorting
+  // them needs beside them.
+  struct List_buffers
   {
+    std::vector<Window> windows;
     std::vector<std::size_t> run_starts;
     std::vector<Window> merged;
   };
 
   // Sorts a list's windows by where they start. A list is a few chains of children, each
   // sorted (in the order of its parent list): the runs of windows that start in order are
-  // merged pairwise, in passes between the list and `merged`, which costs a copy of the list a
+  // merged pairwise, in passes between `windows` and `merged`, which costs a copy of the list a
   // pass rather than a move per pair out of order (lists of a few long chains that interleave
   // have many). Stable, as the order of equal starts is the list's.
-  static void sort_by_start(std::vector<Window>& windows, Sort_buffers& buffers)
+  static void sort_by_start(List_buffers& buffers)
   {
+    std::vector<Window>& windows = buffers.windows;
     const std::size_t n = windows.size();
     std::size_t i = 1;
     while(i < n && !starts_before(windows[i], windows[i - 1]))
@@ -770,8 +773,7 @@ private:
   std::vector<Vertex_entry> m_bucket_entries;
   List_task m_task_one;
   std::vector<List_task> m_tasks;
-  std::vector<std::vector<Window>> m_list_windows; // per pool slot: the list being propagated
-  std::vector<Sort_buffers> m_sort_buffers;        // per pool slot
+  std::vector<List_buffers> m_list_buffers; // per pool slot
   Window_pool m_pool;
   std::size_t m_main_slot = 0; // the pool slot of the thread running run()
   std::vector<int> m_stop_vertices;
