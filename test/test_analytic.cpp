@@ -403,14 +403,14 @@ TEST(WindowToolkit, IndexedPoolKeepsObjectsByIndex)
     EXPECT_EQ(&pool[index[i]], p);
   }
   EXPECT_EQ(pool.live(), n);
-  EXPECT_EQ(pool.bytes(), 4 * Pool::block_size * sizeof(gi::Window));
+  EXPECT_EQ(pool.bytes(), 4 * Pool::block_size * (sizeof(gi::Window) + sizeof(std::uint32_t)));
   for(std::size_t i = 0; i < n; ++i)
     ASSERT_EQ(pool[index[i]].source, int(i));
   // free every other object as one chain, then take as many again: no new block
   for(std::size_t i = 0; i + 2 < n; i += 2)
-    pool[index[i]].next = index[i + 2];
+    pool.link(index[i]) = index[i + 2];
   const std::size_t chain = (n + 1) / 2;
-  pool[index[2 * (chain - 1)]].next = Pool::nil;
+  pool.link(index[2 * (chain - 1)]) = Pool::nil;
   pool.release_chain(0, index[0]);
   EXPECT_EQ(pool.live(), n - chain);
   for(std::size_t i = 0; i < chain; ++i) {
@@ -421,7 +421,7 @@ TEST(WindowToolkit, IndexedPoolKeepsObjectsByIndex)
     ASSERT_EQ(again % 2, 0u) << "a freed index is given again first";
   }
   EXPECT_EQ(pool.live(), n);
-  EXPECT_EQ(pool.bytes(), 4 * Pool::block_size * sizeof(gi::Window));
+  EXPECT_EQ(pool.bytes(), 4 * Pool::block_size * (sizeof(gi::Window) + sizeof(std::uint32_t)));
   for(std::size_t i = 1; i < n; i += 2)
     EXPECT_EQ(pool[index[i]].source, int(i)) << "objects not freed are untouched";
 }

@@ -3,6 +3,7 @@
 #define CGAL_EXT_GEODESICS_3_INTERNAL_VTP_SOLVER_H
 
 #include <CGAL_ext/Geodesics_3/Geodesic_error.h>
+#include <CGAL_ext/Geodesics_3/internal/Inlining.h>
 #include <CGAL_ext/Geodesics_3/internal/Mesh_cache.h>
 #include <CGAL_ext/Geodesics_3/internal/Object_pool.h>
 #include <CGAL_ext/Geodesics_3/internal/Parallel_for.h>
@@ -24,22 +25,24 @@ namespace internal {
 /// Where VTP keeps the windows of its lists.
 typedef Indexed_pool<Window> Window_pool;
 
-/// Windows of the pool linked through `next`, with their last one and their number.
+/// Windows of the pool linked one to the next, with the link of the last one (null while there
+/// is none) and their number. The last link is left unset: it is set when the windows are added
+/// to a list.
 struct Window_list
 {
   std::uint32_t head = Window_pool::nil;
-  Window* tail = nullptr;
+  std::uint32_t* end_link = nullptr;
   std::size_t size = 0;
 
-  void clear() { head = Window_pool::nil, tail = nullptr, size = 0; }
-  /// Appends a new window of `pool`, of the thread's `slot`, set to `w`.
-  void push_back(Window_pool& pool, std::size_t slot, const Window& w)
+  void clear() { head = Window_pool::nil, end_link = nullptr, size = 0; }
+  /// Appends a new window of `pool`, of the thread's `slot`, set to `w`. (Inlined: GCC leaves
+  /// it out of line in `propagate`, which costs a call a window.)
+  CGAL_EXT_ALWAYS_INLINE void push_back(Window_pool& pool, std::size_t slot, const Window& w)
   {
     std::uint32_t index;
-    Window* p = pool.allocate(slot, w, index);
-    p->next = Window_pool::nil;
-    (tail ? tail->next : head) = index;
-    tail = p;
+    pool.allocate(slot, w, index);
+    *(end_link ? end_link : &head) = index;
+    end_link = &pool.link(index);
     ++size;
   }
 };
@@ -402,7 +405,7 @@ private:
   // propagated.
   void add_chain(int h, const Window_list& chain)
   {
-    chain.tail->next = m_head[h];
+    *chain.end_link = m_head[h];
     m_head[h] = chain.head;
     m_statistics.windows_created += chain.size;
     if(m_flushing || inside_swept_region(h))
@@ -611,12 +614,15 @@ private:
     const Halfedge_frame f = m_mesh.frame(h);
     const double d_from = m_distance[m_mesh.source(h)];
     const double d_to = m_distance[m_mesh.target(h)];
+    // The links first, which stay in cache, to fetch the windows ahead: they are far apart in
+    // the pool, and their reads then overlap instead of waiting for each other.
+    m_pool.prefetch_chain(task.input);
     for(std::uint32_t i = task.input; i != Window_pool::nil;) {
       Window& listed = m_pool[i];
-      const std::uint32_t next = listed.next;
+      const std::uint32_t next = m_pool.link(i);
       if(keep_window(listed, h, d_from, d_to))
         windows.push_back(listed);
-      m_pool.release_one(slot, i, listed);
+      m_pool.release_one(slot, i);
       i = next;
     }
     task.input = Window_pool::nil;

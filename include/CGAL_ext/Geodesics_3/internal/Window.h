@@ -35,16 +35,15 @@ struct Window_geometry
 
 /// A window of a list (VTP keeps its windows in lists per half-edge), with the distances at
 /// the ends of its interval, kept equal to `distance_at(b0)` and `distance_at(b1)` so that
-/// trimming and clipping reuse them, the index of the source its paths come from, and the index
-/// of the next window of its list in the pool that holds it: 64 bytes, the size of a cache line,
-/// which the hot loops (walking, sorting and clipping a list) work on. (Not `alignas(64)`: lists
-/// are sorted by value, and GCC notes at every such call that passing over-aligned values
-/// changed ABI; the pool's blocks are aligned.)
+/// trimming and clipping reuse them, and the index of the source its paths come from: 64 bytes
+/// (with padding), the size of a cache line, which the hot loops (walking, sorting and clipping a
+/// list) work on. The links of a list are kept apart, by the pool (VTP_solver.h). (Not
+/// `alignas(64)`: lists are sorted by value, and GCC notes at every such call that passing
+/// over-aligned values changed ABI; the pool's blocks are aligned.)
 struct Window : Window_geometry
 {
   double d0, d1;
   int source;
-  std::uint32_t next = 0; // set when the window is linked into a list (VTP_solver.h)
 };
 static_assert(sizeof(Window) == 64, "a list window is one cache line");
 
