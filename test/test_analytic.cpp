@@ -385,8 +385,9 @@ TEST(WindowToolkit, OverlapPiecesGoToTheShorterWindow)
   EXPECT_GT(pieces, 20000);
 }
 
-// VTP's window store: objects found again by index across blocks, 64-byte aligned, freed objects
-// given again before new ones, the live count and the bytes of the blocks.
+// VTP's window store: objects found again by index across blocks, 64-byte aligned, links kept
+// apart from them, freed objects given again before new ones, the live count and the bytes of
+// the blocks.
 TEST(WindowToolkit, IndexedPoolKeepsObjectsByIndex)
 {
   namespace gi = CGAL_ext::Geodesics_3::internal;
@@ -411,6 +412,9 @@ TEST(WindowToolkit, IndexedPoolKeepsObjectsByIndex)
     pool.link(index[i]) = index[i + 2];
   const std::size_t chain = (n + 1) / 2;
   pool.link(index[2 * (chain - 1)]) = Pool::nil;
+  pool.prefetch_chain(index[0]);
+  for(std::size_t i = 0; i < n; ++i)
+    ASSERT_EQ(pool[index[i]].source, int(i)) << "links are kept apart from the objects";
   pool.release_chain(0, index[0]);
   EXPECT_EQ(pool.live(), n - chain);
   for(std::size_t i = 0; i < chain; ++i) {
