@@ -160,21 +160,21 @@ public:
   // the memory of the rest is never touched.
   Indexed_pool() : m_blocks(new T*[max_blocks]) {}
 
-  T& operator[](std::uint32_t i) const { return m_blocks[i >> block_bits][i & (block_size - 1)]; }
+  T& operator[](std::uint32_t i) const { return block_of(i)[place_of(i)]; }
 
   /// The index of the object after object i in its chain (or in the free list), or nil.
-  std::uint32_t& link(std::uint32_t i) const { return links_of(m_blocks[i >> block_bits])[i & (block_size - 1)]; }
+  std::uint32_t& link(std::uint32_t i) const { return links_of(block_of(i))[place_of(i)]; }
 
   /// Asks the processor to fetch the objects of the chain from `i` on into its caches, along
   /// their links (a hint: nothing else changes).
   void prefetch_chain(std::uint32_t i) const
   {
     while(i != nil) {
-      T* block = m_blocks[i >> block_bits];
+      T* block = block_of(i);
 #if defined(__GNUC__)
-      __builtin_prefetch(block + (i & (block_size - 1)));
+      __builtin_prefetch(block + place_of(i));
 #endif
-      i = links_of(block)[i & (block_size - 1)];
+      i = links_of(block)[place_of(i)];
     }
   }
 
@@ -199,28 +199,35 @@ public:
     return p;
   }
 
-  /// Frees the objects from `i` on along their links.
-  void release_chain(std::size_t slot, std::uint32_t i)
+  /// Calls `visit(object)` for the objects from `i` on along their links, and frees each one
+  /// (into the slot) once visited.
+  template <class Visit>
+  CGAL_EXT_ALWAYS_INLINE void take_chain(std::size_t slot, std::uint32_t i, Visit visit)
   {
+    Slot& s = m_slots[slot];
     while(i != nil) {
-      const std::uint32_t next = link(i);
-      release_one(slot, i);
+      T* block = block_of(i);
+      std::uint32_t& link_of_i = links_of(block)[place_of(i)];
+      const std::uint32_t next = link_of_i;
+      visit(block[place_of(i)]);
+      link_of_i = s.free;
+      s.free = i;
+      --s.live;
       i = next;
     }
   }
 
-  /// Frees object `i` alone, whatever it links to.
-  void release_one(std::size_t slot, std::uint32_t i)
+  /// Frees the objects from `i` on along their links.
+  void release_chain(std::size_t slot, std::uint32_t i)
   {
-    Slot& s = m_slots[slot];
-    link(i) = s.free;
-    s.free = i;
-    --s.live;
+    take_chain(slot, i, [](T&) {});
   }
 
   std::size_t bytes() const { return std::size_t(m_block_count.load()) * Slot::block_bytes; }
 
 private:
+  T* block_of(std::uint32_t i) const { return m_blocks[i >> block_bits]; }
+  static std::uint32_t place_of(std::uint32_t i) { return i & (block_size - 1); }
   static std::uint32_t* links_of(T* block) { return reinterpret_cast<std::uint32_t*>(block + block_size); }
 
   void new_block(Slot& s)

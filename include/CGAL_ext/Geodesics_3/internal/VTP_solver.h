@@ -617,14 +617,10 @@ private:
     // The links first, which stay in cache, to fetch the windows ahead: they are far apart in
     // the pool, and their reads then overlap instead of waiting for each other.
     m_pool.prefetch_chain(task.input);
-    for(std::uint32_t i = task.input; i != Window_pool::nil;) {
-      Window& listed = m_pool[i];
-      const std::uint32_t next = m_pool.link(i);
+    m_pool.take_chain(slot, task.input, [&](Window& listed) CGAL_EXT_ALWAYS_INLINE {
       if(keep_window(listed, h, d_from, d_to))
         windows.push_back(listed);
-      m_pool.release_one(slot, i);
-      i = next;
-    }
+    });
     task.input = Window_pool::nil;
     if(windows.empty())
       return;
