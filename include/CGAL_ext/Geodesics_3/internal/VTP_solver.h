@@ -466,14 +466,15 @@ private:
     }
     if(m_emits_when_taken[v] && m_distance[v] < m_emitted[v])
       emit_from_vertex(v);
+    // The lists of the edges at v: both half-edges of each edge, each of them in a face of v's
+    // fan. The order is that of scheduling both sides of each edge of each face in turn.
+    bool first = true;
     m_mesh.for_each_outgoing(v, [&](int h) {
-      const int in = Mesh_cache::prev(h);
       schedule(h);
-      schedule(in);
-      if(m_mesh.opposite(h) >= 0)
-        schedule(m_mesh.opposite(h));
-      if(m_mesh.opposite(in) >= 0)
-        schedule(m_mesh.opposite(in));
+      schedule(Mesh_cache::prev(h));
+      if(first && m_mesh.opposite(h) >= 0)
+        schedule(m_mesh.opposite(h)); // a closed fan: the last face's half-edge into v
+      first = false;
     });
   }
 
