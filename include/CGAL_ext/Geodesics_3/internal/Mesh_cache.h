@@ -181,6 +181,14 @@ struct Mesh_cache
   void mesh_face_point(int f, const std::array<double, 3>& p, int& given_f, std::array<double, 3>& mesh_b) const;
 
   bool is_glued(int v) const { return !next_glued.empty() && next_glued[std::size_t(v)] != v; }
+  /// Whether u and v are two vertices glued at one point.
+  bool are_glued(int u, int v) const
+  {
+    bool found = false;
+    if(u != v && is_glued(u))
+      for_each_glued(u, [&](int w) { found |= w == v; });
+    return found;
+  }
   /// Calls `f(u)` for `v` and every vertex glued to it: the vertices of one point of the surface.
   template <class Function>
   void for_each_copy_of_point(int v, Function f) const

@@ -103,12 +103,14 @@ protected:
     return true;
   }
 
-  /// The cone of v emitting at its distance (`saddle_cone_of`), or nullptr: every direction.
-  /// Vertices emit on the thread running the solver only.
-  const Saddle_cone* cone_of(int v)
+  /// The cone of v emitting at its distance (`saddle_cone_of`), set in `cone`, or nullptr:
+  /// every direction. Reads only the distance and arrival of v.
+  const Saddle_cone* cone_of(int v, Saddle_cone& cone) const
   {
-    return saddle_cone_of(m_mesh, v, m_distance[std::size_t(v)], m_arrival[std::size_t(v)], m_cone);
+    return saddle_cone_of(m_mesh, v, m_distance[std::size_t(v)], m_arrival[std::size_t(v)], cone);
   }
+  /// The same in the solver's own cone, for vertices that emit on the thread running the solver.
+  const Saddle_cone* cone_of(int v) { return cone_of(v, m_cone); }
 
   /// v emits every way from now on (until a path lowers its distance again).
   void forget_arrival(int v) { m_arrival[std::size_t(v)] = Arrival{}; }

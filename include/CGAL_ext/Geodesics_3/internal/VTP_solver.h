@@ -16,6 +16,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace CGAL_ext {
@@ -57,6 +58,24 @@ struct List_task
   int apex_source = -1;     // the source of that path
   Arrival apex_arrival;     // and where it comes from
   Window_list to_ac, to_cb; // children for the lists across A->C and C->B
+  int to_ac_halfedge = -1, to_cb_halfedge = -1; // and those lists' half-edges (once there are children)
+};
+
+/// What a vertex emits as a pseudo-source, computed before it is applied: the relaxations of its
+/// neighbours that lowered their distances when computed, and its windows (each a chain of one).
+struct Vertex_emission
+{
+  struct Relaxation
+  {
+    int vertex;
+    double distance;
+    Arrival arrival;
+  };
+  int vertex = -1;
+  int source = -1; // the nearest source of the vertex when it emits
+  std::vector<Relaxation> relaxations;
+  std::vector<std::pair<int, std::uint32_t>> windows; // the half-edge of the list, the window
+  Saddle_cone cone;
 };
 
 /// Geodesic distances from any number of sources by vertex-oriented triangle propagation
@@ -378,6 +397,7 @@ private:
           took_any = true;
         }
       }
+      emit_deferred();
       m_statistics.seconds_selection += seconds_since(start);
       if(took_any) {
         drain();
@@ -403,12 +423,14 @@ private:
   // when it lies in the swept region (or when every list is being flushed); otherwise it
   // waits. The order of windows in a list does not matter: they are sorted when the list is
   // propagated.
-  void add_chain(int h, const Window_list& chain)
+  void add_chain(int h, const Window_list& chain) { add_chain(h, chain, inside_swept_region(h)); }
+  // The same, told whether h lies in the swept region.
+  void add_chain(int h, const Window_list& chain, bool swept)
   {
     *chain.end_link = m_head[h];
     m_head[h] = chain.head;
     m_statistics.windows_created += chain.size;
-    if(m_flushing || inside_swept_region(h))
+    if(m_flushing || swept)
       schedule(h);
     else if(!(m_list_flags[h] & in_waiting_lists)) {
       m_list_flags[h] |= in_waiting_lists;
@@ -428,24 +450,94 @@ private:
   }
 
   // A pseudo-source at vertex v: whole-edge windows on the edges opposite v, and its
-  // neighbours relaxed along the edges.
+  // neighbours relaxed along the edges, at once (VTP) or once the vertices of the round are taken
+  // (batched: `emit_deferred`).
   void emit_from_vertex(int v)
   {
-    const double sigma = m_distance[v];
-    const int source = m_nearest_source[v];
-    m_emitted[v] = sigma;
-    m_window_limit = limit();
+    m_emitted[v] = m_distance[v];
     if(!m_read_stamp.empty())
       m_mesh.for_each_outgoing(v, [&](int h) {
         note_read(m_mesh.target(h));
         note_read(m_mesh.apex(h));
       });
+    if(m_batched) {
+      if(m_deferred_emissions == m_emissions.size())
+        m_emissions.emplace_back();
+      m_emissions[m_deferred_emissions++].vertex = v;
+      return;
+    }
+    m_window_limit = limit();
+    m_emission_one.vertex = v;
+    compute_emission(m_emission_one, m_main_slot);
+    apply_emission(m_emission_one);
+  }
+
+  // The emissions of the vertices taken in a round, computed in parallel and applied in the
+  // order the vertices were taken. Each reads the distances as the round left them: an emission
+  // does not see its neighbours' (which only lowers their distances), so a few more windows may
+  // be kept than in VTP, none that matters.
+  void emit_deferred()
+  {
+    const std::size_t n = m_deferred_emissions;
+    if(n == 0)
+      return;
+    m_window_limit = limit();
+    for_each_index(m_parallel, n, emission_grain,
+                   [this](std::size_t i, std::size_t slot) { compute_emission(m_emissions[i], slot); });
+    for(std::size_t i = 0; i < n; ++i)
+      apply_emission(m_emissions[i]);
+    m_deferred_emissions = 0;
+    note_live_windows(m_pool);
+  }
+
+  // What `e.vertex` emits at its distance (`emit_vertex_windows`). Reads only shared state that
+  // no task writes; writes only `e` and the pool's `slot`. A window's edge is trimmed with the
+  // distances of its ends as the emission's own relaxations so far leave them, as if they had
+  // been applied.
+  void compute_emission(Vertex_emission& e, std::size_t slot)
+  {
+    const int v = e.vertex;
+    const double sigma = m_distance[v];
+    e.source = m_nearest_source[v];
+    e.relaxations.clear();
+    e.windows.clear();
+    auto distance = [&](int u) {
+      double d = m_distance[u];
+      for(const Vertex_emission::Relaxation& r : e.relaxations)
+        if(r.vertex == u || m_mesh.are_glued(r.vertex, u))
+          d = std::min(d, r.distance);
+      return d;
+    };
     // A saddle emits only into its cone (a vertex a reset of the approximation made a source
     // has no arrival: every way).
-    const Saddle_cone* cone = cone_of(v);
     emit_vertex_windows(
-      m_mesh, v, sigma, [&](int u, double d, const Arrival& a) { relax(u, d, source, a); },
-      [&](int g, const Window_geometry& w) { insert_window(g, w, source); }, cone);
+      m_mesh, v, sigma,
+      [&](int u, double d, const Arrival& a) {
+        if(d < m_distance[u]) // otherwise the relaxation would find nothing to lower
+          e.relaxations.push_back({u, d, a});
+      },
+      [&](int g, const Window_geometry& geometry) {
+        Window w = list_window(geometry, e.source);
+        if(keep_window(w, g, distance(m_mesh.source(g)), distance(m_mesh.target(g)))) {
+          std::uint32_t index;
+          m_pool.allocate(slot, w, index);
+          e.windows.push_back({g, index});
+        }
+      },
+      cone_of(v, e.cone));
+  }
+
+  void apply_emission(const Vertex_emission& e)
+  {
+    for(const Vertex_emission::Relaxation& r : e.relaxations)
+      relax(r.vertex, r.distance, e.source, r.arrival);
+    for(const auto& [g, index] : e.windows) {
+      Window_list chain;
+      chain.head = index;
+      chain.end_link = &m_pool.link(index);
+      chain.size = 1;
+      add_chain(g, chain);
+    }
   }
 
   void emit_from_face_point(const Source_point& s, int source)
@@ -552,8 +644,11 @@ private:
       propagate_tasks(n);
       m_statistics.seconds_propagation += seconds_since(start);
       start = Clock::now();
-      for(std::size_t i = 0; i < n; ++i)
+      for(std::size_t i = 0; i < n; ++i) {
+        if(i + merge_lookahead < n)
+          prefetch_merge(m_tasks[i + merge_lookahead]);
         merge(m_tasks[i]);
+      }
       note_live_windows(m_pool);
       m_statistics.seconds_merge += seconds_since(start);
     }
@@ -648,6 +743,8 @@ private:
 
     const double d_apex = std::min(m_distance[m_mesh.apex(h)], best);
     const Face_crossing across = face_crossing(m_mesh, h, f);
+    task.to_ac_halfedge = across.to_ac;
+    task.to_cb_halfedge = across.to_cb;
     for(const Window& w : windows) {
       const double crossing = apex_crossing(w, f.apex_x, f.apex_y);
       make_children(w, across, std::min(split, crossing), std::max(split, crossing), m_min_window_length,
@@ -665,12 +762,33 @@ private:
   {
     ++m_statistics.lists_propagated;
     const int h = task.halfedge;
+    const int a = m_mesh.source(h), b = m_mesh.target(h), c = m_mesh.apex(h);
     if(task.apex_distance < infinity())
-      relax(m_mesh.apex(h), task.apex_distance, task.apex_source, task.apex_arrival);
+      relax(c, task.apex_distance, task.apex_source, task.apex_arrival);
     if(task.to_ac.size)
-      add_chain(m_mesh.opposite(Mesh_cache::prev(h)), task.to_ac);
+      add_chain(task.to_ac_halfedge, task.to_ac, m_is_taken[a] || m_is_taken[c]);
     if(task.to_cb.size)
-      add_chain(m_mesh.opposite(Mesh_cache::next(h)), task.to_cb);
+      add_chain(task.to_cb_halfedge, task.to_cb, m_is_taken[c] || m_is_taken[b]);
+  }
+
+  // What `merge(task)` will read, asked of the caches a few tasks ahead: the merges are serial
+  // and read scattered entries, which the propagation of the tasks did not bring to this core.
+  void prefetch_merge(const List_task& task) const
+  {
+#if defined(__GNUC__)
+    const int h = task.halfedge;
+    const int a = m_mesh.source(h), b = m_mesh.target(h), c = m_mesh.apex(h);
+    __builtin_prefetch(&m_distance[std::size_t(c)]);
+    for(int v : {a, b, c})
+      __builtin_prefetch(&m_is_taken[std::size_t(v)]);
+    for(int g : {task.to_ac.size ? task.to_ac_halfedge : -1, task.to_cb.size ? task.to_cb_halfedge : -1})
+      if(g >= 0) {
+        __builtin_prefetch(&m_head[std::size_t(g)]);
+        __builtin_prefetch(&m_list_flags[std::size_t(g)]);
+      }
+#else
+    (void)task;
+#endif
   }
 
   // Rule 2: windows of the list (sorted by where they start) are clipped against each other
@@ -761,6 +879,8 @@ private:
 
   // Chunks of a fixed size: lists are small units of work, but uneven.
   static constexpr std::size_t list_grain = 8;
+  static constexpr std::size_t emission_grain = 4;
+  static constexpr std::size_t merge_lookahead = 8; // tasks
 
   std::vector<std::uint8_t> m_is_taken;
   std::vector<std::uint8_t> m_emits_when_taken; // pseudo-source, source, or made a source by a reset
@@ -775,6 +895,9 @@ private:
   Vertex_buckets m_buckets;
   std::vector<Vertex_entry> m_bucket_entries;
   List_task m_task_one;
+  Vertex_emission m_emission_one;
+  std::vector<Vertex_emission> m_emissions; // of the round (batched), the first ones deferred
+  std::size_t m_deferred_emissions = 0;
   std::vector<List_task> m_tasks;
   std::vector<List_buffers> m_list_buffers; // per pool slot
   Window_pool m_pool;
