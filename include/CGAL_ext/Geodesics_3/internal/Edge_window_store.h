@@ -29,15 +29,6 @@ struct alignas(64) Edge_window // one cache line
   Edge_window* next;         // the next window of the edge (sorted by b0), or of the pool's free list
 };
 
-/// A distance found for a vertex, applied after a parallel step.
-struct Vertex_update
-{
-  int vertex;
-  int source;
-  double distance;
-  Arrival arrival = Arrival{}; // where the path comes from (`emit_vertex_windows`)
-};
-
 /// A window to (re)queue with its smallest distance and its current version.
 struct Queued_window
 {

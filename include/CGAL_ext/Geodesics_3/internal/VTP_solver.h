@@ -36,15 +36,25 @@ struct Window_list
   std::size_t size = 0;
 
   void clear() { head = Window_pool::nil, end_link = nullptr, size = 0; }
+  /// The chain of window `index` of `pool` alone.
+  void assign_one(Window_pool& pool, std::uint32_t index)
+  {
+    head = index;
+    end_link = &pool.link(index);
+    size = 1;
+  }
   /// Appends a new window of `pool`, of the thread's `slot`, set to `w`. (Inlined: GCC leaves
   /// it out of line in `propagate`, which costs a call a window.)
   CGAL_EXT_ALWAYS_INLINE void push_back(Window_pool& pool, std::size_t slot, const Window& w)
   {
     std::uint32_t index;
     pool.allocate(slot, w, index);
-    *(end_link ? end_link : &head) = index;
-    end_link = &pool.link(index);
-    ++size;
+    if(end_link) {
+      *end_link = index;
+      end_link = &pool.link(index);
+      ++size;
+    } else
+      assign_one(pool, index);
   }
 };
 
@@ -62,18 +72,12 @@ struct List_task
 };
 
 /// What a vertex emits as a pseudo-source, computed before it is applied: the relaxations of its
-/// neighbours that lowered their distances when computed, and its windows (each a chain of one).
+/// neighbours that lowered their distances when computed, and its windows, each with the
+/// half-edge of the list it joins.
 struct Vertex_emission
 {
-  struct Relaxation
-  {
-    int vertex;
-    double distance;
-    Arrival arrival;
-  };
   int vertex = -1;
-  int source = -1; // the nearest source of the vertex when it emits
-  std::vector<Relaxation> relaxations;
+  std::vector<Vertex_update> relaxations;
   std::vector<std::pair<int, std::uint32_t>> windows; // the half-edge of the list, the window
   Saddle_cone cone;
 };
@@ -288,6 +292,7 @@ private:
     m_stop_limit = infinity();
     m_stop_floor = 0;
     m_heap.clear();
+    m_deferred_emissions = 0; // none is left, unless a run threw
     m_buckets.clear();
     m_window_limit = m_max_distance;
     m_peak_windows = 0;
@@ -423,14 +428,12 @@ private:
   // when it lies in the swept region (or when every list is being flushed); otherwise it
   // waits. The order of windows in a list does not matter: they are sorted when the list is
   // propagated.
-  void add_chain(int h, const Window_list& chain) { add_chain(h, chain, inside_swept_region(h)); }
-  // The same, told whether h lies in the swept region.
-  void add_chain(int h, const Window_list& chain, bool swept)
+  void add_chain(int h, const Window_list& chain)
   {
     *chain.end_link = m_head[h];
     m_head[h] = chain.head;
     m_statistics.windows_created += chain.size;
-    if(m_flushing || swept)
+    if(m_flushing || inside_swept_region(h))
       schedule(h);
     else if(!(m_list_flags[h] & in_waiting_lists)) {
       m_list_flags[h] |= in_waiting_lists;
@@ -470,12 +473,16 @@ private:
     m_emission_one.vertex = v;
     compute_emission(m_emission_one, m_main_slot);
     apply_emission(m_emission_one);
+    note_live_windows(m_pool);
   }
 
   // The emissions of the vertices taken in a round, computed in parallel and applied in the
-  // order the vertices were taken. Each reads the distances as the round left them: an emission
-  // does not see its neighbours' (which only lowers their distances), so a few more windows may
-  // be kept than in VTP, none that matters.
+  // order the vertices were taken, once the round's vertices are taken. So, unlike when each
+  // vertex emitted as it was taken: an emission does not see the relaxations of the others of
+  // its round, and may keep a few more windows; a vertex one of them lowers is taken in this
+  // round at its former distance (it emits again when taken at the lower one); and the
+  // emissions' lists do not count towards the round's batch of lists. Every path stays a real
+  // path, and the order stays the same for any number of threads.
   void emit_deferred()
   {
     const std::size_t n = m_deferred_emissions;
@@ -490,20 +497,21 @@ private:
     note_live_windows(m_pool);
   }
 
-  // What `e.vertex` emits at its distance (`emit_vertex_windows`). Reads only shared state that
-  // no task writes; writes only `e` and the pool's `slot`. A window's edge is trimmed with the
+  // What `e.vertex` emits at its distance (`emit_vertex_windows`). Reads only the mesh and the
+  // vertices' distances, nearest sources and arrivals, which nothing writes while emissions are
+  // computed; writes only `e` and the pool's `slot`. A window's edge is trimmed with the
   // distances of its ends as the emission's own relaxations so far leave them, as if they had
   // been applied.
   void compute_emission(Vertex_emission& e, std::size_t slot)
   {
     const int v = e.vertex;
     const double sigma = m_distance[v];
-    e.source = m_nearest_source[v];
+    const int source = m_nearest_source[v];
     e.relaxations.clear();
     e.windows.clear();
     auto distance = [&](int u) {
       double d = m_distance[u];
-      for(const Vertex_emission::Relaxation& r : e.relaxations)
+      for(const Vertex_update& r : e.relaxations)
         if(r.vertex == u || m_mesh.are_glued(r.vertex, u))
           d = std::min(d, r.distance);
       return d;
@@ -514,10 +522,10 @@ private:
       m_mesh, v, sigma,
       [&](int u, double d, const Arrival& a) {
         if(d < m_distance[u]) // otherwise the relaxation would find nothing to lower
-          e.relaxations.push_back({u, d, a});
+          e.relaxations.push_back({u, source, d, a});
       },
       [&](int g, const Window_geometry& geometry) {
-        Window w = list_window(geometry, e.source);
+        Window w = list_window(geometry, source);
         if(keep_window(w, g, distance(m_mesh.source(g)), distance(m_mesh.target(g)))) {
           std::uint32_t index;
           m_pool.allocate(slot, w, index);
@@ -529,13 +537,11 @@ private:
 
   void apply_emission(const Vertex_emission& e)
   {
-    for(const Vertex_emission::Relaxation& r : e.relaxations)
-      relax(r.vertex, r.distance, e.source, r.arrival);
+    for(const Vertex_update& r : e.relaxations)
+      relax(r.vertex, r.distance, r.source, r.arrival);
     for(const auto& [g, index] : e.windows) {
       Window_list chain;
-      chain.head = index;
-      chain.end_link = &m_pool.link(index);
-      chain.size = 1;
+      chain.assign_one(m_pool, index);
       add_chain(g, chain);
     }
   }
@@ -558,14 +564,15 @@ private:
     }
     if(m_emits_when_taken[v] && m_distance[v] < m_emitted[v])
       emit_from_vertex(v);
-    // The lists of the edges at v: both half-edges of each edge, each of them in a face of v's
-    // fan. The order is that of scheduling both sides of each edge of each face in turn.
+    // The lists on the edges at v: h and prev(h) of each face of the walk around v, and the
+    // opposite of the first h (every other opposite is one of those), in the order that
+    // scheduling each face's two and their opposites in turn gave.
     bool first = true;
     m_mesh.for_each_outgoing(v, [&](int h) {
       schedule(h);
       schedule(Mesh_cache::prev(h));
       if(first && m_mesh.opposite(h) >= 0)
-        schedule(m_mesh.opposite(h)); // a closed fan: the last face's half-edge into v
+        schedule(m_mesh.opposite(h)); // each other opposite is the h or prev(h) of a face of the walk
       first = false;
     });
   }
@@ -762,24 +769,24 @@ private:
   {
     ++m_statistics.lists_propagated;
     const int h = task.halfedge;
-    const int a = m_mesh.source(h), b = m_mesh.target(h), c = m_mesh.apex(h);
     if(task.apex_distance < infinity())
-      relax(c, task.apex_distance, task.apex_source, task.apex_arrival);
+      relax(m_mesh.apex(h), task.apex_distance, task.apex_source, task.apex_arrival);
     if(task.to_ac.size)
-      add_chain(task.to_ac_halfedge, task.to_ac, m_is_taken[a] || m_is_taken[c]);
+      add_chain(task.to_ac_halfedge, task.to_ac);
     if(task.to_cb.size)
-      add_chain(task.to_cb_halfedge, task.to_cb, m_is_taken[c] || m_is_taken[b]);
+      add_chain(task.to_cb_halfedge, task.to_cb);
   }
 
   // What `merge(task)` will read, asked of the caches a few tasks ahead: the merges are serial
   // and read scattered entries, which the propagation of the tasks did not bring to this core.
+  // (The children's edges end at the face's vertices, or at vertices glued to them where a
+  // degenerate face was removed: those are only not prefetched.)
   void prefetch_merge(const List_task& task) const
   {
 #if defined(__GNUC__)
     const int h = task.halfedge;
-    const int a = m_mesh.source(h), b = m_mesh.target(h), c = m_mesh.apex(h);
-    __builtin_prefetch(&m_distance[std::size_t(c)]);
-    for(int v : {a, b, c})
+    __builtin_prefetch(&m_distance[std::size_t(m_mesh.apex(h))]);
+    for(int v : {m_mesh.source(h), m_mesh.target(h), m_mesh.apex(h)})
       __builtin_prefetch(&m_is_taken[std::size_t(v)]);
     for(int g : {task.to_ac.size ? task.to_ac_halfedge : -1, task.to_cb.size ? task.to_cb_halfedge : -1})
       if(g >= 0) {
@@ -896,8 +903,8 @@ private:
   std::vector<Vertex_entry> m_bucket_entries;
   List_task m_task_one;
   Vertex_emission m_emission_one;
-  std::vector<Vertex_emission> m_emissions; // of the round (batched), the first ones deferred
-  std::size_t m_deferred_emissions = 0;
+  std::vector<Vertex_emission> m_emissions; // batched: the first m_deferred_emissions are the
+  std::size_t m_deferred_emissions = 0;     // round's, waiting; the rest is storage kept for reuse
   std::vector<List_task> m_tasks;
   std::vector<List_buffers> m_list_buffers; // per pool slot
   Window_pool m_pool;

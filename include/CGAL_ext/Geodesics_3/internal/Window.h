@@ -77,6 +77,16 @@ struct Arrival
   float dx = 0, dy = 0;
 };
 
+/// A distance found for a vertex, applied after a parallel step (or after the emission that
+/// found it).
+struct Vertex_update
+{
+  int vertex;
+  int source;
+  double distance;
+  Arrival arrival = Arrival{}; // where the path comes from (`emit_vertex_windows`)
+};
+
 /// The arrival at the point (vx, vy) of the frame of h from the point (x, y) of that frame.
 inline Arrival arrival_from(int h, double x, double y, double vx, double vy)
 {
