@@ -68,15 +68,17 @@ struct List_task
   int apex_source = -1;     // the source of that path
   Arrival apex_arrival;     // and where it comes from
   Window_list to_ac, to_cb; // children for the lists across A->C and C->B
-  int to_ac_halfedge = -1, to_cb_halfedge = -1; // and those lists' half-edges (once there are children)
+  // and those lists' half-edges (once there are children), so that the serial merge does not
+  // read the mesh's opposites
+  int to_ac_halfedge = -1, to_cb_halfedge = -1;
 };
 
-/// What a vertex emits as a pseudo-source, computed before it is applied: the relaxations of its
-/// neighbours that lowered their distances when computed, and its windows, each with the
-/// half-edge of the list it joins.
+/// What a pseudo-source (a vertex, or a face point) emits, computed before it is applied: the
+/// relaxations of its neighbours that lowered their distances when computed, and its windows,
+/// each with the half-edge of the list it joins.
 struct Vertex_emission
 {
-  int vertex = -1;
+  int vertex = -1; // the emitting vertex (when it is one)
   std::vector<Vertex_update> relaxations;
   std::vector<std::pair<int, std::uint32_t>> windows; // the half-edge of the list, the window
   Saddle_cone cone;
@@ -441,17 +443,6 @@ private:
     }
   }
 
-  void insert_window(int h, const Window_geometry& geometry, int source)
-  {
-    Window w = list_window(geometry, source);
-    if(keep_window(w, h, m_distance[m_mesh.source(h)], m_distance[m_mesh.target(h)])) {
-      Window_list chain;
-      chain.push_back(m_pool, m_main_slot, w);
-      add_chain(h, chain);
-      note_live_windows(m_pool);
-    }
-  }
-
   // A pseudo-source at vertex v: whole-edge windows on the edges opposite v, and its
   // neighbours relaxed along the edges, at once (VTP) or once the vertices of the round are taken
   // (batched: `emit_deferred`).
@@ -473,7 +464,6 @@ private:
     m_emission_one.vertex = v;
     compute_emission(m_emission_one, m_main_slot);
     apply_emission(m_emission_one);
-    note_live_windows(m_pool);
   }
 
   // The emissions of the vertices taken in a round, computed in parallel and applied in the
@@ -494,19 +484,28 @@ private:
     for(std::size_t i = 0; i < n; ++i)
       apply_emission(m_emissions[i]);
     m_deferred_emissions = 0;
-    note_live_windows(m_pool);
   }
 
-  // What `e.vertex` emits at its distance (`emit_vertex_windows`). Reads only the mesh and the
-  // vertices' distances, nearest sources and arrivals, which nothing writes while emissions are
-  // computed; writes only `e` and the pool's `slot`. A window's edge is trimmed with the
-  // distances of its ends as the emission's own relaxations so far leave them, as if they had
-  // been applied.
+  // What `e.vertex` emits at its distance. Reads only the mesh and the vertices' distances,
+  // nearest sources and arrivals, which nothing writes while emissions are computed; writes only
+  // `e` and the pool's `slot`.
   void compute_emission(Vertex_emission& e, std::size_t slot)
   {
     const int v = e.vertex;
-    const double sigma = m_distance[v];
-    const int source = m_nearest_source[v];
+    compute_windows(e, slot, m_nearest_source[v], [&](auto relax, auto add) {
+      // A saddle emits only into its cone (a vertex a reset of the approximation made a source
+      // has no arrival: every way).
+      emit_vertex_windows(m_mesh, v, m_distance[v], relax, add, cone_of(v, e.cone));
+    });
+  }
+
+  // What `emit(relax, add)` (an emitter of Sources.h, paths from `source`) gives, into `e`: the
+  // relaxations that lower a distance now, and the windows kept, allocated in the pool's `slot`.
+  // A window's edge is trimmed with the distances of its ends as the emission's own relaxations
+  // so far leave them, as if they had been applied.
+  template <class Emit>
+  void compute_windows(Vertex_emission& e, std::size_t slot, int source, Emit emit)
+  {
     e.relaxations.clear();
     e.windows.clear();
     auto distance = [&](int u) {
@@ -516,10 +515,7 @@ private:
           d = std::min(d, r.distance);
       return d;
     };
-    // A saddle emits only into its cone (a vertex a reset of the approximation made a source
-    // has no arrival: every way).
-    emit_vertex_windows(
-      m_mesh, v, sigma,
+    emit(
       [&](int u, double d, const Arrival& a) {
         if(d < m_distance[u]) // otherwise the relaxation would find nothing to lower
           e.relaxations.push_back({u, source, d, a});
@@ -531,8 +527,7 @@ private:
           m_pool.allocate(slot, w, index);
           e.windows.push_back({g, index});
         }
-      },
-      cone_of(v, e.cone));
+      });
   }
 
   void apply_emission(const Vertex_emission& e)
@@ -544,14 +539,15 @@ private:
       chain.assign_one(m_pool, index);
       add_chain(g, chain);
     }
+    note_live_windows(m_pool);
   }
 
   void emit_from_face_point(const Source_point& s, int source)
   {
     m_window_limit = limit();
-    emit_face_point_windows(
-      m_mesh, s, [&](int u, double d, const Arrival& a) { relax(u, d, source, a); },
-      [&](int g, const Window_geometry& w) { insert_window(g, w, source); });
+    compute_windows(m_emission_one, m_main_slot, source,
+                    [&](auto relax, auto add) { emit_face_point_windows(m_mesh, s, relax, add); });
+    apply_emission(m_emission_one);
   }
 
   void take_vertex(int v)
