@@ -92,7 +92,7 @@ void add_distances_command(CLI::App& app, Distances_options& options)
   cmd->add_option("--algorithm", options.solver.algorithm,
                   "Solver: vtp (exact), pvtp (exact, parallel), avtp (approximate), pavtp (approximate, "
                   "parallel), mmp (exact, windows in exact order), fwp-mmp (exact, windows bucket by bucket), "
-                  "pmmp (fwp-mmp in parallel); default: vtp");
+                  "pmmp (fwp-mmp in parallel); default: " + std::string(default_vertex_solver));
   cmd->add_option("--lambda", options.solver.lambda,
                   "avtp and pavtp: the wavefront is reset every lambda mean edge lengths; smaller is faster "
                   "and coarser, distances are never below the exact ones; positive; default: " +

@@ -24,6 +24,15 @@ namespace geodesic_tool {
 // ---------------------------------------------------------------------------------------------
 // The options as given
 
+/// The solver of `distances` and `sample` when none is asked for: the exact parallel one, which
+/// gives the same distances for every number of threads (and on one thread costs what VTP
+/// does), unless the tool was built without TBB.
+#ifdef CGAL_LINKED_WITH_TBB
+inline constexpr const char* default_vertex_solver = "pvtp";
+#else
+inline constexpr const char* default_vertex_solver = "vtp";
+#endif
+
 /// The solver options of both subcommands.
 struct Solver_options
 {
@@ -38,7 +47,7 @@ struct Distances_options
 {
   std::string mesh;
   std::vector<std::string> sources;
-  Solver_options solver{"vtp"};
+  Solver_options solver{default_vertex_solver};
   std::string output;
   std::string labels; // nearest sources, when not empty
   bool stats = false;

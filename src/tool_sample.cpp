@@ -32,7 +32,7 @@ void add_sample_command(CLI::App& app, Sample_options& options)
                   "The first sample, a vertex id; default: the vertex farthest from vertex 0");
   cmd->add_option("--algorithm", options.solver.algorithm,
                   "Solver of each sample's propagation: vtp (exact), pvtp (exact, parallel), avtp or pavtp "
-                  "(approximate); default: vtp");
+                  "(approximate); default: " + std::string(default_vertex_solver));
   cmd->add_option("--lambda", options.solver.lambda, "avtp and pavtp: as for distances");
   cmd->add_option("--threads", options.solver.threads, "pvtp and pavtp: number of threads; default: all cores");
   cmd->add_option("--batch-size", options.solver.batch_size, "pvtp, avtp and pavtp: as for distances");

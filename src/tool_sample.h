@@ -25,7 +25,7 @@ struct Sample_options
   std::optional<long long> count;
   std::optional<double> radius;
   std::optional<std::string> first;
-  Solver_options solver{"vtp"};
+  Solver_options solver{default_vertex_solver};
   std::string output;
   std::string labels;
   bool stats = false;

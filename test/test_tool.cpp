@@ -515,7 +515,8 @@ TEST(Tool_options, points_out_of_the_mesh_are_named)
 TEST(Tool_options, solver_defaults)
 {
   const tool::Solver_choice distances = tool::solver_choice(tool::Distances_options().solver, false);
-  EXPECT_STREQ(distances.algorithm->name, "vtp");
+  // the exact parallel solver (this build has TBB): the same distances on any number of threads
+  EXPECT_STREQ(distances.algorithm->name, "pvtp");
   EXPECT_EQ(distances.lambda, tool::default_lambda);
   EXPECT_EQ(distances.threads, 0);
   EXPECT_EQ(distances.batch_size, CGAL_ext::default_batch_size);
@@ -653,7 +654,7 @@ TEST(Tool_command_line, distances_fills_its_options)
   const tool::Distances_options& d = defaults.distances;
   EXPECT_EQ(d.mesh, "m.off");
   EXPECT_EQ(d.sources, std::vector<std::string>{"0"});
-  EXPECT_EQ(d.solver.algorithm, "vtp");
+  EXPECT_EQ(d.solver.algorithm, "pvtp");
   EXPECT_EQ(d.solver.lambda, std::nullopt);
   EXPECT_EQ(d.solver.threads, std::nullopt);
   EXPECT_EQ(d.solver.batch_size, std::nullopt);
@@ -1073,7 +1074,7 @@ struct Algorithm_case
 void PrintTo(const Algorithm_case& c, std::ostream* os) { *os << c.name; }
 
 const Algorithm_case algorithm_cases[] = {
-  {"default", "", "vtp", "", ""},
+  {"default", "", "pvtp", "*", ""},
   {"vtp", "--algorithm vtp", "vtp", "", ""},
   {"pvtp", "--algorithm pvtp --threads 2", "pvtp", "2", ""},
   {"pvtp_all_cores", "--algorithm pvtp --batch-size 64", "pvtp", "*", ""},
@@ -1698,17 +1699,17 @@ const Bad_case bad_cases[] = {
   {"lambda_nan", E + " --source 0 --algorithm avtp --lambda nan", "d.txt", "got nan"},
   {"lambda_infinite", E + " --source 0 --algorithm avtp --lambda inf", "d.ply", "got inf"},
   {"lambda_not_a_number", E + " --source 0 --algorithm avtp --lambda coarse", "d.txt", "--lambda"},
-  {"lambda_with_vtp", E + " --source 0 --lambda 8", "d.txt", "error: --lambda applies to avtp and pavtp only"},
+  {"lambda_with_vtp", E + " --source 0 --lambda 8 --algorithm vtp", "d.txt", "error: --lambda applies to avtp and pavtp only"},
   {"lambda_with_pvtp", E + " --source 0 --algorithm pvtp --lambda 8", "d.txt", "--lambda applies to"},
   {"threads_zero", E + " --source 0 --algorithm pvtp --threads 0", "d.txt", "--threads must be a positive integer"},
   {"threads_negative", E + " --source 0 --algorithm pavtp --threads -2", "d.txt", "got -2"},
   {"threads_not_a_number", E + " --source 0 --algorithm pvtp --threads x", "d.txt", "--threads"},
   {"threads_fraction", E + " --source 0 --algorithm pvtp --threads 1.5", "d.txt", "--threads"},
-  {"threads_with_vtp", E + " --source 0 --threads 2", "d.txt", "error: --threads applies to pvtp, pavtp and pmmp only"},
+  {"threads_with_vtp", E + " --source 0 --threads 2 --algorithm vtp", "d.txt", "error: --threads applies to pvtp, pavtp and pmmp only"},
   {"threads_with_avtp", E + " --source 0 --algorithm avtp --threads 2", "d.ply", "--threads applies to"},
   {"batch_size_zero", E + " --source 0 --algorithm pvtp --batch-size 0", "d.txt", "--batch-size must be a positive integer"},
   {"batch_size_negative", E + " --source 0 --algorithm pvtp --batch-size=-5", "d.txt", "got -5"},
-  {"batch_size_with_vtp", E + " --source 0 --batch-size 8", "d.txt", "--batch-size applies to pvtp, avtp, pavtp and pmmp only"},
+  {"batch_size_with_vtp", E + " --source 0 --batch-size 8 --algorithm vtp", "d.txt", "--batch-size applies to pvtp, avtp, pavtp and pmmp only"},
   {"lambda_with_mmp", E + " --source 0 --algorithm mmp --lambda 8", "d.txt", "error: --lambda applies to avtp and pavtp only"},
   {"lambda_with_fwp_mmp", E + " --source 0 --algorithm fwp-mmp --lambda 8", "d.txt", "--lambda applies to"},
   {"lambda_with_pmmp", E + " --source 0 --algorithm pmmp --lambda 8", "d.ply", "--lambda applies to"},
@@ -1881,6 +1882,32 @@ std::vector<std::pair<std::size_t, double>> parse_samples(const std::string& tex
     samples.push_back(s);
   }
   return samples;
+}
+
+// With no --algorithm, distances and sample run the exact parallel solver: the same output for
+// every number of threads (the file's bytes), and VTP's distances and samples to round-off.
+TEST_F(Tool, default_solver_is_exact_and_the_same_on_any_number_of_threads)
+{
+  const std::string mesh = "distances '" + elephant + "' --source 100,f:40:0.6:0.3:0.1 --output d.txt";
+  ASSERT_EQ(run(mesh).exit_code, 0);
+  const std::string by_default = read_text(path("d.txt"));
+  for(const char* threads : {"1", "2", "4"}) {
+    ASSERT_EQ(run(mesh + " --threads " + threads).exit_code, 0) << threads;
+    EXPECT_EQ(read_text(path("d.txt")), by_default) << threads << " threads";
+  }
+  const std::vector<double> vtp = distances("distances '" + elephant + "' --source 100,f:40:0.6:0.3:0.1 --algorithm vtp");
+  const double largest = *std::max_element(vtp.begin(), vtp.end());
+  expect_same_distances(parse_distances(by_default), vtp, 1e-12 * largest);
+
+  const std::string sample = "sample '" + elephant + "' --count 30";
+  const std::string samples = output_of(sample, "s.txt");
+  EXPECT_EQ(output_of(sample + " --threads 1", "s.txt"), samples);
+  const auto parallel = parse_samples(samples), sequential = parse_samples(output_of(sample + " --algorithm vtp", "s.txt"));
+  ASSERT_EQ(parallel.size(), sequential.size());
+  for(std::size_t k = 0; k < parallel.size(); ++k) {
+    EXPECT_EQ(parallel[k].first, sequential[k].first) << "sample " << k;
+    EXPECT_NEAR(parallel[k].second, sequential[k].second, 1e-12 * largest) << "radius after sample " << k;
+  }
 }
 
 // Each sample is the vertex farthest from those before it (checked with the tool's own
