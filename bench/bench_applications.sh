@@ -29,7 +29,7 @@ echo "mesh=$mesh vertices=$vertices full_vtp_solve=$vtp full_fwp_mmp_solve=$mmp"
 
 # one thread (VTP), and two (PVTP: samples in batches, the same samples)
 for n in 100 1000 10000; do
-  s=$($tool sample "$mesh" --count $n --output "$work/s$n.txt" --stats 2>&1 | stat seconds_sampling)
+  s=$($tool sample "$mesh" --count $n --algorithm vtp --output "$work/s$n.txt" --stats 2>&1 | stat seconds_sampling)
   echo "fps samples=$n threads=1 seconds=$s per_full_vtp_solve=$(python3 -c "print(round($s / $vtp, 2))")"
   s=$($tool sample "$mesh" --count $n --algorithm pvtp --threads 2 --output "$work/p$n.txt" --stats 2>&1 | stat seconds_sampling)
   echo "fps samples=$n threads=2 seconds=$s per_full_vtp_solve=$(python3 -c "print(round($s / $vtp, 2))")"

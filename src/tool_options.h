@@ -25,8 +25,8 @@ namespace geodesic_tool {
 // The options as given
 
 /// The solver of `distances` and `sample` when none is asked for: the exact parallel one, which
-/// gives the same distances for every number of threads (and on one thread costs what VTP
-/// does), unless the tool was built without TBB.
+/// gives the same distances for every number of threads (and on one thread costs a few percent
+/// more than VTP), unless the tool was built without TBB.
 #ifdef CGAL_LINKED_WITH_TBB
 inline constexpr const char* default_vertex_solver = "pvtp";
 #else

@@ -516,7 +516,8 @@ TEST(Tool_options, solver_defaults)
 {
   const tool::Solver_choice distances = tool::solver_choice(tool::Distances_options().solver, false);
   // the exact parallel solver (this build has TBB): the same distances on any number of threads
-  EXPECT_STREQ(distances.algorithm->name, "pvtp");
+  EXPECT_STREQ(distances.algorithm->name, tool::default_vertex_solver);
+  EXPECT_STREQ(tool::default_vertex_solver, "pvtp");
   EXPECT_EQ(distances.lambda, tool::default_lambda);
   EXPECT_EQ(distances.threads, 0);
   EXPECT_EQ(distances.batch_size, CGAL_ext::default_batch_size);
@@ -654,7 +655,7 @@ TEST(Tool_command_line, distances_fills_its_options)
   const tool::Distances_options& d = defaults.distances;
   EXPECT_EQ(d.mesh, "m.off");
   EXPECT_EQ(d.sources, std::vector<std::string>{"0"});
-  EXPECT_EQ(d.solver.algorithm, "pvtp");
+  EXPECT_EQ(d.solver.algorithm, tool::default_vertex_solver);
   EXPECT_EQ(d.solver.lambda, std::nullopt);
   EXPECT_EQ(d.solver.threads, std::nullopt);
   EXPECT_EQ(d.solver.batch_size, std::nullopt);
@@ -1185,7 +1186,7 @@ protected:
 
 TEST_P(Solvers, pvtp_is_vtp_on_any_number_of_threads)
 {
-  const std::vector<double> vtp = solve("");
+  const std::vector<double> vtp = solve("--algorithm vtp");
   const std::string one = solve_text("--algorithm pvtp --threads 1");
   EXPECT_EQ(solve_text("--algorithm pvtp --threads 2"), one);
   EXPECT_EQ(solve_text("--algorithm pvtp --threads 4"), one);
@@ -1196,7 +1197,7 @@ TEST_P(Solvers, pvtp_is_vtp_on_any_number_of_threads)
 
 TEST_P(Solvers, avtp_is_pavtp_and_never_below_vtp)
 {
-  const std::vector<double> vtp = solve("");
+  const std::vector<double> vtp = solve("--algorithm vtp");
   const std::string avtp = solve_text("--algorithm avtp --lambda 8");
   EXPECT_EQ(solve_text("--algorithm pavtp --lambda 8 --threads 2"), avtp);
   EXPECT_EQ(solve_text("--algorithm avtp"), avtp) << "the default lambda is not 8";
@@ -1212,7 +1213,7 @@ TEST_P(Solvers, avtp_is_pavtp_and_never_below_vtp)
 
 TEST_P(Solvers, avtp_with_a_huge_lambda_is_vtp)
 {
-  const std::vector<double> vtp = solve("");
+  const std::vector<double> vtp = solve("--algorithm vtp");
   expect_relatively_close(solve("--algorithm avtp --lambda 1e12"), vtp, 1e-12);
   expect_relatively_close(solve("--algorithm pavtp --lambda 1e12 --threads 2"), vtp, 1e-12);
 }
@@ -1220,7 +1221,7 @@ TEST_P(Solvers, avtp_with_a_huge_lambda_is_vtp)
 // MMP, FWP-MMP and PMMP keep windows for paths; their distances are VTP's up to round-off.
 TEST_P(Solvers, mmp_family_is_vtp)
 {
-  const std::vector<double> vtp = solve("");
+  const std::vector<double> vtp = solve("--algorithm vtp");
   const double tolerance = 1e-12 * bbox_diagonal(read_soup(GetParam()));
   for(const char* args : {"--algorithm mmp", "--algorithm fwp-mmp", "--algorithm pmmp",
                           "--algorithm pmmp --threads 2 --batch-size 7"}) {
@@ -1271,7 +1272,7 @@ TEST_F(Tool, other_component_is_unreachable)
 TEST_F(Tool, path_between_two_vertices)
 {
   const Soup soup = read_soup(elephant);
-  const std::vector<double> vtp = distances("distances '" + elephant + "' --source 0");
+  const std::vector<double> vtp = distances("distances '" + elephant + "' --source 0 --algorithm vtp");
   const std::vector<Point> p = path_points("path '" + elephant + "' --source 0 --target 1500");
   ASSERT_GE(p.size(), 3u);
   // from the source to the target, their positions read back exactly (17 significant digits)
@@ -1325,7 +1326,7 @@ TEST_F(Tool, path_obj_and_ply_hold_the_txt_points)
 TEST_F(Tool, path_from_a_face_point_to_a_vertex)
 {
   const Soup soup = read_soup(elephant);
-  const std::vector<double> vtp = distances("distances '" + elephant + "' --source f:12:0.2:0.3:0.5");
+  const std::vector<double> vtp = distances("distances '" + elephant + "' --source f:12:0.2:0.3:0.5 --algorithm vtp");
   const std::vector<Point> p = path_points("path '" + elephant + "' --source f:12:0.2:0.3:0.5 --target 1000");
   ASSERT_GE(p.size(), 3u);
   // the coordinates follow the file's order of the face's vertices, as for distances
@@ -1337,7 +1338,7 @@ TEST_F(Tool, path_from_a_face_point_to_a_vertex)
 TEST_F(Tool, path_from_a_vertex_to_a_face_point)
 {
   const Soup soup = read_soup(elephant);
-  const std::vector<double> vtp = distances("distances '" + elephant + "' --source 0");
+  const std::vector<double> vtp = distances("distances '" + elephant + "' --source 0 --algorithm vtp");
   const Point target = face_point(soup, 40, {{0.6, 0.3, 0.1}});
   const std::vector<Point> p = path_points("path '" + elephant + "' --source 0 --target f:40:0.6:0.3:0.1");
   ASSERT_GE(p.size(), 3u);
@@ -1900,8 +1901,9 @@ TEST_F(Tool, default_solver_is_exact_and_the_same_on_any_number_of_threads)
   expect_same_distances(parse_distances(by_default), vtp, 1e-12 * largest);
 
   const std::string sample = "sample '" + elephant + "' --count 30";
-  const std::string samples = output_of(sample, "s.txt");
+  const std::string samples = output_of(sample + " --threads 2", "s.txt");
   EXPECT_EQ(output_of(sample + " --threads 1", "s.txt"), samples);
+  EXPECT_EQ(output_of(sample, "s.txt"), samples);
   const auto parallel = parse_samples(samples), sequential = parse_samples(output_of(sample + " --algorithm vtp", "s.txt"));
   ASSERT_EQ(parallel.size(), sequential.size());
   for(std::size_t k = 0; k < parallel.size(); ++k) {
@@ -2114,9 +2116,10 @@ TEST_F(Tool, matrix_rows_are_the_distances_of_each_source)
   const std::string args = "matrix '" + elephant + "' --source 0,10,f:5:0.2:0.3:0.5 --threads 2";
   const auto rows = parse_rows(output_of(args, "m.txt"));
   ASSERT_EQ(rows.size(), 3u);
-  EXPECT_EQ(rows[0], distances("distances '" + elephant + "' --source 0"));
-  EXPECT_EQ(rows[1], distances("distances '" + elephant + "' --source 10"));
-  EXPECT_EQ(rows[2], distances("distances '" + elephant + "' --source f:5:0.2:0.3:0.5"));
+  // each row is a VTP solve
+  EXPECT_EQ(rows[0], distances("distances '" + elephant + "' --source 0 --algorithm vtp"));
+  EXPECT_EQ(rows[1], distances("distances '" + elephant + "' --source 10 --algorithm vtp"));
+  EXPECT_EQ(rows[2], distances("distances '" + elephant + "' --source f:5:0.2:0.3:0.5 --algorithm vtp"));
   // the same with one thread
   EXPECT_EQ(parse_rows(output_of("matrix '" + elephant + "' --source 0,10,f:5:0.2:0.3:0.5 --threads 1", "m1.txt")),
             rows);
