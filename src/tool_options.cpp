@@ -19,12 +19,6 @@ namespace geodesic_tool {
 
 namespace {
 
-#ifdef CGAL_LINKED_WITH_TBB
-const bool parallel_available = true;
-#else
-const bool parallel_available = false;
-#endif
-
 /// The names of the algorithms that satisfy `wanted` (and keep windows, for paths), as
 /// "a, b and c" (`conjunction` "and" or "or").
 template <class Predicate>

@@ -24,14 +24,17 @@ namespace geodesic_tool {
 // ---------------------------------------------------------------------------------------------
 // The options as given
 
+/// Whether the tool was built with TBB, which the parallel solvers need.
+#ifdef CGAL_LINKED_WITH_TBB
+inline constexpr bool parallel_available = true;
+#else
+inline constexpr bool parallel_available = false;
+#endif
+
 /// The solver of `distances` and `sample` when none is asked for: the exact parallel one, which
 /// gives the same distances for every number of threads (and on one thread costs a few percent
-/// more than VTP), unless the tool was built without TBB.
-#ifdef CGAL_LINKED_WITH_TBB
-inline constexpr const char* default_vertex_solver = "pvtp";
-#else
-inline constexpr const char* default_vertex_solver = "vtp";
-#endif
+/// more than VTP), when the tool has TBB.
+inline constexpr const char* default_vertex_solver = parallel_available ? "pvtp" : "vtp";
 
 /// The solver options of both subcommands.
 struct Solver_options
