@@ -47,15 +47,17 @@ head -n "$pairs" "$work/s10000.txt" | cut -d' ' -f1 | paste -sd, > "$work/pairs.
 s=$($tool matrix "$mesh" --source "$(cat "$work/pairs.txt")" --target sources --threads 2 --output "$work/m.npy" --stats 2>&1 | stat seconds_rows)
 echo "all_pairs samples=$pairs threads=2 seconds=$s per_full_vtp_solve=$(python3 -c "print(round($s / $vtp, 1))")"
 
-# the diagram from one FWP-MMP propagation (the tool's default) and from PMMP on 2 threads
-# (what CGAL::Parallel_tag runs); the cells must be the same
+# the diagram from the windows of one VTP propagation, of PVTP on 2 threads (the tool's default),
+# of FWP-MMP and of PMMP on 2 threads; the cells must be the same
 for n in 10 100 1000; do
   sources=$(python3 -c "print(','.join(str(i * ($vertices // $n)) for i in range($n)))")
-  for algorithm in "fwp-mmp" "pmmp --threads 2"; do
+  for algorithm in "vtp" "pvtp --threads 2" "fwp-mmp" "pmmp --threads 2"; do
     # shellcheck disable=SC2086
     line=$($tool voronoi "$mesh" --source "$sources" --algorithm $algorithm --output "$work/c_${algorithm%% *}.txt" --stats 2>&1)
     s=$(echo "$line" | stat seconds_diagram)
     echo "voronoi sources=$n algorithm=${algorithm// /_} seconds=$s bisectors=$(echo "$line" | stat bisectors) vertices=$(echo "$line" | stat voronoi_vertices) unresolved=$(echo "$line" | stat unresolved_parts) per_full_fwp_mmp_solve=$(python3 -c "print(round($s / $mmp, 2))") per_full_vtp_solve=$(python3 -c "print(round($s / $vtp, 2))")"
   done
-  cmp -s "$work/c_fwp-mmp.txt" "$work/c_pmmp.txt" || echo "voronoi sources=$n: the cells of fwp-mmp and pmmp differ"
+  for other in vtp pvtp pmmp; do
+    cmp -s "$work/c_fwp-mmp.txt" "$work/c_$other.txt" || echo "voronoi sources=$n: the cells of fwp-mmp and $other differ"
+  done
 done

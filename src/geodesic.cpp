@@ -10,7 +10,7 @@
 //                   [--threads N] --output FILE.npy|FILE.mtx|FILE.txt [--stats]
 //   geodesic sample MESH (--count N | --radius R) [--first V] [--algorithm vtp|pvtp|avtp|pavtp]
 //                   [--threads N] [--output FILE.txt] [--labels FILE.txt|FILE.ply] [--stats]
-//   geodesic voronoi MESH --source S[,S...] [--algorithm fwp-mmp|mmp|pmmp] [--threads N]
+//   geodesic voronoi MESH --source S[,S...] [--algorithm vtp|pvtp|fwp-mmp|mmp|pmmp] [--threads N]
 //                    --output CELLS.txt|CELLS.ply [--bisectors FILE.obj|FILE.txt] [--dual FILE.obj] [--stats]
 //   geodesic patterns MESH (--patch-center V --patch-radius R | --patch-vertices FILE | --patch-property NAME)
 //                     [--scales A:B]

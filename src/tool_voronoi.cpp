@@ -22,8 +22,10 @@ void add_voronoi_command(CLI::App& app, Voronoi_options& options)
     "voronoi", "The exact geodesic Voronoi diagram of the sources: cells, bisectors across faces, dual graph");
   add_mesh_and_sources(*cmd, options.mesh, options.sources);
   cmd->add_option("--algorithm", options.solver.algorithm,
-                  "Solver of the one multi-source propagation: fwp-mmp, mmp or pmmp (parallel); default: fwp-mmp");
-  cmd->add_option("--threads", options.solver.threads, "pmmp: number of threads; default: all cores");
+                  "Solver of the one multi-source propagation, whose windows the diagram is read from: vtp, pvtp "
+                  "(parallel), fwp-mmp, mmp or pmmp (parallel); all exact, the same cells; default: " +
+                    std::string(default_vertex_solver));
+  cmd->add_option("--threads", options.solver.threads, "pvtp and pmmp: number of threads; default: all cores");
   cmd->add_option("--output", options.output,
                   "The cell of every vertex, as distances --labels writes it: .txt (one source index per line, "
                   "vertex order, -1 where unreached) or .ply (per-vertex 'distance' and 'source', a colour per "
@@ -85,10 +87,10 @@ int run_voronoi(const Voronoi_options& options)
 {
   // Validate the command line before the (possibly long) reading and solving.
   for(const Algorithm& a : algorithms)
-    if(options.solver.algorithm == a.name && !keeps_windows(a))
+    if(options.solver.algorithm == a.name && a.approximate)
       throw Tool_error(std::string("--algorithm ") + a.name +
-                       " keeps no windows: a Voronoi diagram is read from those of fwp-mmp, mmp or pmmp");
-  const Solver_choice choice = solver_choice(options.solver, true);
+                       " is approximate: a Voronoi diagram is exact (use vtp, pvtp, fwp-mmp, mmp or pmmp)");
+  const Solver_choice choice = solver_choice(options.solver, false);
   const std::vector<Surface_point> sources = parse_sources(options.sources);
   const Output_format cells_format = output_format(options.output);
   const Output_format bisectors_format =

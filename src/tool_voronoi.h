@@ -22,7 +22,7 @@ struct Voronoi_options
 {
   std::string mesh;
   std::vector<std::string> sources;
-  Solver_options solver{"fwp-mmp"};
+  Solver_options solver{default_vertex_solver};
   std::string output;    // the cells, .txt or .ply
   std::string bisectors; // .obj or .txt
   std::string dual;      // .obj

@@ -1779,8 +1779,8 @@ const Bad_case bad_cases[] = {
   {"voronoi_cells_obj", V + " --source 0,100", "c.obj", "unknown output format 'c.obj'"},
   {"voronoi_bisectors_ply", V + " --source 0,100 --bisectors b.ply", "c.txt", "--bisectors 'b.ply': use .obj or .txt"},
   {"voronoi_dual_txt", V + " --source 0,100 --dual d.txt", "c.txt", "the dual graph is written as .obj"},
-  {"voronoi_with_vtp", V + " --source 0,100 --algorithm vtp", "c.txt",
-   "--algorithm vtp keeps no windows: a Voronoi diagram is read from those of fwp-mmp, mmp or pmmp"},
+  {"voronoi_with_avtp", V + " --source 0,100 --algorithm avtp", "c.txt",
+   "--algorithm avtp is approximate: a Voronoi diagram is exact (use vtp, pvtp, fwp-mmp, mmp or pmmp)"},
   {"voronoi_same_files", V + " --source 0,100 --bisectors c.txt", "c.txt", "name the same file 'c.txt'"},
   {"voronoi_source_out_of_range", V + " --source 0,2775", "c.txt", "source '2775'"},
   {"voronoi_missing_source", V, "c.txt", "--source"},
@@ -1991,6 +1991,16 @@ TEST_F(Tool, voronoi_cells_bisectors_and_dual_graph)
   }
   EXPECT_EQ(vertices, 4u);
   EXPECT_EQ(dual_edges, bisector_pairs);
+
+  // read from the windows of VTP, of PVTP on one thread, of FWP-MMP and of PMMP: the same cells and dual graph
+  for(const std::string algorithm : {"vtp", "pvtp --threads 1", "fwp-mmp", "pmmp --threads 2"}) {
+    ASSERT_EQ(run("voronoi '" + elephant + "'" + sources + " --algorithm " + algorithm + " --output v.txt --dual v.obj")
+                .exit_code,
+              0)
+      << algorithm;
+    EXPECT_EQ(read_text(path("v.txt")), read_text(path("c.txt"))) << algorithm;
+    EXPECT_EQ(read_text(path("v.obj")), read_text(path("d.obj"))) << algorithm;
+  }
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -5,11 +5,11 @@
 #include "support/analytic_surfaces.h"
 #include "support/checks.h"
 #include "support/mesh_transformations.h"
-#include "support/solve.h"
 
 #include <CGAL_ext/Surface_mesh_geodesic_paths.h>
 #include <CGAL_ext/geodesic_voronoi_diagram.h>
 
+#include <limits>
 #include <memory>
 #include <random>
 #include <set>
@@ -99,12 +99,32 @@ void expect_exact_diagram(const Mesh& m, const std::vector<Face_location>& sourc
   }
   const std::vector<std::array<std::size_t, 3>> vertex_triples(triples.begin(), triples.end());
   EXPECT_EQ(vertex_triples, d.dual_triangles) << label;
-  // the cells of the vertices are the labels of one propagation
-  auto labels = get(CGAL::dynamic_vertex_property_t<std::size_t>(), m);
-  solve(m, sources, CGAL_ext::parameters::vertex_source_map(labels).algorithm(CGAL_ext::FWP_MMP));
-  for(Vertex v : vertices(m))
-    EXPECT_EQ(d.vertex_cell[v.idx()], get(labels, v)) << label << ": vertex " << v.idx();
+  // the cell of each vertex is its nearest source (either of two within round-off), and its
+  // distance the distance to it
+  for(Vertex v : vertices(m)) {
+    double nearest = std::numeric_limits<double>::infinity();
+    for(const auto& s : single)
+      nearest = std::min(nearest, s->distance(v));
+    const std::size_t cell = d.vertex_cell[v.idx()];
+    if(!(nearest < std::numeric_limits<double>::infinity())) {
+      EXPECT_EQ(cell, CGAL_ext::no_source) << label << ": vertex " << v.idx();
+      continue;
+    }
+    ASSERT_LT(cell, sources.size()) << label << ": vertex " << v.idx();
+    EXPECT_LE(single[cell]->distance(v), nearest + tolerance) << label << ": vertex " << v.idx();
+    EXPECT_NEAR(d.vertex_distance[v.idx()], nearest, tolerance) << label << ": vertex " << v.idx();
+  }
 }
+
+/// The diagram read from FWP-MMP's windows (the default), or from VTP's.
+auto diagram_of(const Mesh& m, const std::vector<Face_location>& sources, CGAL_ext::Geodesic_algorithm algorithm)
+{
+  return CGAL_ext::geodesic_voronoi_diagram(m, sources, CGAL_ext::parameters::algorithm(algorithm));
+}
+
+constexpr CGAL_ext::Geodesic_algorithm diagram_algorithms[] = {CGAL_ext::FWP_MMP, CGAL_ext::VTP};
+
+std::string name_of(CGAL_ext::Geodesic_algorithm algorithm) { return algorithm == CGAL_ext::VTP ? " (VTP)" : " (FWP-MMP)"; }
 
 TEST(Geodesic_voronoi, bisectors_and_vertices_are_exact_on_real_meshes)
 {
@@ -115,12 +135,20 @@ TEST(Geodesic_voronoi, bisectors_and_vertices_are_exact_on_real_meshes)
     const auto d = CGAL_ext::geodesic_voronoi_diagram(m, sources);
     expect_exact_diagram(m, sources, d, name);
     EXPECT_GE(d.vertices.size(), 2u) << name;
-    // PMMP gives the same diagram for every thread count
+    // the diagram read from VTP's windows is exact too, and has the same cells and dual graph
+    const auto v = diagram_of(m, sources, CGAL_ext::VTP);
+    expect_exact_diagram(m, sources, v, name + name_of(CGAL_ext::VTP));
+    EXPECT_EQ(v.dual_edges, d.dual_edges) << name;
+    EXPECT_EQ(v.dual_triangles, d.dual_triangles) << name;
+    // PMMP and PVTP give the same diagram for every thread count (FWP_MMP with Parallel_tag: PMMP)
     for(int threads : {1, 2}) {
-      const auto p = CGAL_ext::geodesic_voronoi_diagram<CGAL::Parallel_tag>(
-        m, sources, CGAL_ext::parameters::number_of_threads(threads));
-      EXPECT_EQ(p.dual_edges, d.dual_edges) << name << ", " << threads << " threads";
-      EXPECT_EQ(p.dual_triangles, d.dual_triangles) << name << ", " << threads << " threads";
+      for(CGAL_ext::Geodesic_algorithm algorithm : diagram_algorithms) {
+        const auto p = CGAL_ext::geodesic_voronoi_diagram<CGAL::Parallel_tag>(
+          m, sources, CGAL_ext::parameters::number_of_threads(threads).algorithm(algorithm));
+        EXPECT_EQ(p.dual_edges, d.dual_edges) << name << ", " << threads << " threads";
+        EXPECT_EQ(p.dual_triangles, d.dual_triangles) << name << ", " << threads << " threads";
+        EXPECT_EQ(p.vertex_cell, d.vertex_cell) << name << ", " << threads << " threads";
+      }
     }
   }
 }
@@ -187,10 +215,11 @@ TEST(Geodesic_voronoi, a_flat_square_has_straight_bisectors_and_the_circumcentre
   for(const Point& s : site)
     sources.push_back(planar_location(m, s));
   ASSERT_EQ(sources.size(), 3u);
-  for(std::size_t count : {2, 3}) {
+  for(std::size_t count : {2, 3})
+    for(CGAL_ext::Geodesic_algorithm algorithm : diagram_algorithms) {
     const std::vector<Face_location> some(sources.begin(), sources.begin() + std::ptrdiff_t(count));
-    const auto d = CGAL_ext::geodesic_voronoi_diagram(m, some);
-    expect_exact_diagram(m, some, d, std::to_string(count) + " sources");
+    const auto d = diagram_of(m, some, algorithm);
+    expect_exact_diagram(m, some, d, std::to_string(count) + " sources" + name_of(algorithm));
     for(const auto& b : d.bisectors)
       for(const auto& p : b.points)
         EXPECT_NEAR(std::sqrt(CGAL::squared_distance(p.point, site[b.first_source])),
@@ -214,13 +243,15 @@ TEST(Geodesic_voronoi, a_flat_square_has_straight_bisectors_and_the_circumcentre
 TEST(Geodesic_voronoi, four_cells_meet_at_the_centre_of_a_square)
 {
   const Mesh m = make_grid(9, 0.125);
-  for(const Point& centre : {Point(0.53, 0.47, 0), Point(0.51, 0.46, 0), Point(0.455, 0.535, 0)}) {
+  for(const Point& centre : {Point(0.53, 0.47, 0), Point(0.51, 0.46, 0), Point(0.455, 0.535, 0)})
+    for(CGAL_ext::Geodesic_algorithm algorithm : diagram_algorithms) {
     SCOPED_TRACE(centre);
+    SCOPED_TRACE(name_of(algorithm));
     std::vector<Face_location> sources;
     for(const auto& [dx, dy] : {std::make_pair(-0.2, -0.2), std::make_pair(0.2, -0.2), std::make_pair(0.2, 0.2),
                                 std::make_pair(-0.2, 0.2)})
       sources.push_back(planar_location(m, Point(centre.x() + dx, centre.y() + dy, 0)));
-    const auto d = CGAL_ext::geodesic_voronoi_diagram(m, sources);
+    const auto d = diagram_of(m, sources, algorithm);
     expect_exact_diagram(m, sources, d, "four symmetric sources");
     ASSERT_EQ(d.vertices.size(), 1u);
     EXPECT_EQ(d.vertices[0].sources, (std::vector<std::size_t>{0, 1, 2, 3}));
@@ -271,7 +302,9 @@ TEST(Geodesic_voronoi, a_cell_without_any_vertex_is_found)
                                            {f, Barycentric{{0.4, 0.3, 0.3}}},
                                            {f, Barycentric{{0.3, 0.4, 0.3}}},
                                            {f, Barycentric{{0.3, 0.3, 0.4}}}};
-  const auto d = CGAL_ext::geodesic_voronoi_diagram(m, sources);
+  for(CGAL_ext::Geodesic_algorithm algorithm : diagram_algorithms) {
+  SCOPED_TRACE(name_of(algorithm));
+  const auto d = diagram_of(m, sources, algorithm);
   expect_exact_diagram(m, sources, d, "a cell inside a face");
   EXPECT_EQ(std::count(d.vertex_cell.begin(), d.vertex_cell.end(), std::size_t(1)), 0) << "a cell without vertices";
   for(std::size_t other : {2, 3, 4})
@@ -281,6 +314,7 @@ TEST(Geodesic_voronoi, a_cell_without_any_vertex_is_found)
   for(const auto& v : d.vertices)
     around += std::count(v.sources.begin(), v.sources.end(), std::size_t(1));
   EXPECT_EQ(around, 3u) << "three Voronoi vertices around the small cell";
+  }
 }
 
 // A point one snap (1e-12) from a vertex, on an edge, is as far as the vertex (within its
@@ -317,12 +351,15 @@ TEST(Geodesic_voronoi, a_source_alone_in_its_component_owns_it)
   const Mesh m = mesh_from_soup(points, triangles);
   const std::vector<Face_location> sources{corner_location(m, Vertex(0)), corner_location(m, Vertex(48)),
                                            corner_location(m, Vertex(49 + 24))};
-  const auto d = CGAL_ext::geodesic_voronoi_diagram(m, sources);
-  expect_exact_diagram(m, sources, d, "two components");
-  for(std::size_t v = 49; v < 98; ++v)
-    EXPECT_EQ(d.vertex_cell[v], 2u) << "vertex " << v;
-  EXPECT_EQ(d.dual_edges, (std::vector<std::pair<std::size_t, std::size_t>>{{0, 1}}));
-  EXPECT_TRUE(d.vertices.empty());
+  for(CGAL_ext::Geodesic_algorithm algorithm : diagram_algorithms) {
+    SCOPED_TRACE(name_of(algorithm));
+    const auto d = diagram_of(m, sources, algorithm);
+    expect_exact_diagram(m, sources, d, "two components");
+    for(std::size_t v = 49; v < 98; ++v)
+      EXPECT_EQ(d.vertex_cell[v], 2u) << "vertex " << v;
+    EXPECT_EQ(d.dual_edges, (std::vector<std::pair<std::size_t, std::size_t>>{{0, 1}}));
+    EXPECT_TRUE(d.vertices.empty());
+  }
 }
 
 // Meshes the package has never seen: the elephant scaled by 1e-3 and 1e3, subdivided,
@@ -332,17 +369,19 @@ TEST(Geodesic_voronoi, exact_on_transformed_and_disconnected_meshes)
 {
   const Mesh& elephant = test_mesh("elephant");
   auto sources_of = [](const Mesh& m) { return spread_sources(m, 4, 11, location(m.number_of_faces() - 10, 0.25, 0.4)); };
-  for(Transform t : {SCALED_DOWN, SCALED_UP, LOOP_SUBDIVIDED, JITTERED, CUT_OPEN}) {
-    const Mesh m = transformed(elephant, t);
-    const std::vector<Face_location> sources = sources_of(m);
-    expect_exact_diagram(m, sources, CGAL_ext::geodesic_voronoi_diagram(m, sources),
-                         std::string("elephant ") + transform_names[t]);
+  for(CGAL_ext::Geodesic_algorithm algorithm : diagram_algorithms) {
+    for(Transform t : {SCALED_DOWN, SCALED_UP, LOOP_SUBDIVIDED, JITTERED, CUT_OPEN}) {
+      const Mesh m = transformed(elephant, t);
+      const std::vector<Face_location> sources = sources_of(m);
+      expect_exact_diagram(m, sources, diagram_of(m, sources, algorithm),
+                           std::string("elephant ") + transform_names[t] + name_of(algorithm));
+    }
+    const Mesh both = disjoint_union({&elephant, &test_mesh("mushroom")});
+    const std::vector<Face_location> sources = sources_of(both);
+    ASSERT_LT(sources.front().first.idx(), elephant.number_of_faces());
+    ASSERT_GE(sources.back().first.idx(), elephant.number_of_faces());
+    expect_exact_diagram(both, sources, diagram_of(both, sources, algorithm), "elephant and mushroom" + name_of(algorithm));
   }
-  const Mesh both = disjoint_union({&elephant, &test_mesh("mushroom")});
-  const std::vector<Face_location> sources = sources_of(both);
-  ASSERT_LT(sources.front().first.idx(), elephant.number_of_faces());
-  ASSERT_GE(sources.back().first.idx(), elephant.number_of_faces());
-  expect_exact_diagram(both, sources, CGAL_ext::geodesic_voronoi_diagram(both, sources), "elephant and mushroom");
 }
 
 TEST(Geodesic_voronoi, bad_requests_are_named)
@@ -351,7 +390,16 @@ TEST(Geodesic_voronoi, bad_requests_are_named)
   EXPECT_TRUE(throws_geodesic_error([&] { CGAL_ext::geodesic_voronoi_diagram(m, std::vector<Vertex>{}); },
                                     {"no source"}));
   EXPECT_TRUE(throws_geodesic_error(
-    [&] { CGAL_ext::geodesic_voronoi_diagram(m, Vertex(0), CGAL_ext::parameters::algorithm(CGAL_ext::VTP)); }, {"VTP"}));
+    [&] {
+      CGAL_ext::geodesic_voronoi_diagram(m, Vertex(0), CGAL_ext::parameters::algorithm(CGAL_ext::VTP).approximation(4.));
+    },
+    {"approximation"}));
+  EXPECT_TRUE(throws_geodesic_error(
+    [&] {
+      CGAL_ext::geodesic_voronoi_diagram(m, Vertex(0),
+                                         CGAL_ext::parameters::algorithm(CGAL_ext::VTP).stop_vertices(std::vector<Vertex>{Vertex(5)}));
+    },
+    {"stop_vertices"}));
   EXPECT_TRUE(throws_geodesic_error(
     [&] { CGAL_ext::geodesic_voronoi_diagram(m, Vertex(0), CGAL_ext::parameters::max_distance(1.)); }, {"max_distance"}));
   EXPECT_TRUE(throws_geodesic_error([&] { CGAL_ext::geodesic_voronoi_diagram(m, Vertex(9999)); }, {"out of range"}));

@@ -14,12 +14,14 @@
 #include <CGAL_ext/Geodesics_3/internal/Geodesic_setup.h>
 #include <CGAL_ext/Geodesics_3/internal/Geodesic_voronoi.h>
 #include <CGAL_ext/Geodesics_3/internal/MMP_solver.h>
+#include <CGAL_ext/Geodesics_3/internal/VTP_solver.h>
 
 #include <CGAL/tags.h>
 
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <optional>
 #include <set>
 #include <utility>
 #include <vector>
@@ -76,16 +78,21 @@ struct Geodesic_voronoi_diagram
 /// nearest source), the bisectors cut across faces, the Voronoi vertices where three cells meet,
 /// and the dual graph.
 ///
-/// The diagram is read from one exact multi-source propagation (FWP-MMP, or PMMP with
-/// `CGAL::Parallel_tag`), whose windows give the distance and nearest source at any point of
-/// the surface. In each face the nearest source is followed along the boundary (each edge is
-/// cut where its windows change, and every change of the nearest source is located by bisection
-/// to 1e-12 of the segment searched, at most an edge); a face crossed by two cells holds one bisector, whose inner points are found
-/// the same way; a face where three cells meet holds a Voronoi vertex, found by shrinking a
-/// triangle with a corner in each cell to round-off; a face with more is cut in four, up to five
-/// times. Every point reported is as far from its two (or three) sources as the solver's
-/// round-off allows. A cell that crosses an edge or a face without containing any vertex is found
-/// too: it shows on the windows of the edge, or as a source inside the face.
+/// The diagram is read from one exact multi-source propagation, whose windows give the distance
+/// and nearest source at any point of the surface: FWP-MMP by default (PMMP with
+/// `CGAL::Parallel_tag`), or with `algorithm(VTP)` VTP (PVTP), whose windows are kept as they
+/// are propagated across each face and clipped against each other into the same store as MMP's
+/// (VTP drops a path only where another is at least as short, so these windows and the paths
+/// through the vertices give every distance; several times faster than MMP on meshes of many
+/// saddle vertices, see the README). In each face the nearest source is followed along the
+/// boundary (each edge is cut where its windows change, and every change of the nearest source
+/// is located by bisection to 1e-12 of the segment searched, at most an edge); a face crossed
+/// by two cells holds one bisector, whose inner points are found the same way; a face where
+/// three cells meet holds a Voronoi vertex, found by shrinking a triangle with a corner in each
+/// cell to round-off; a face with more is cut in four, up to five times. Every point reported
+/// is as far from its two (or three) sources as the solver's round-off allows. A cell that
+/// crosses an edge or a face without containing any vertex is found too: it shows on the
+/// windows of the edge, or as a source inside the face.
 ///
 /// \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or `CGAL::Parallel_if_available_tag`
 /// \tparam TriangleMesh a model of `FaceListGraph`
@@ -93,12 +100,13 @@ struct Geodesic_voronoi_diagram
 ///
 /// \param tm the triangle mesh
 /// \param sources the sites of the diagram; a duplicated source has an empty cell
-/// \param np optional named parameters: `number_of_threads`, `batch_size`, `glued_vertices`, and
+/// \param np optional named parameters: `algorithm` (`FWP_MMP`, `MMP` or `VTP`), `number_of_threads`,
+///        `batch_size`, `glued_vertices`, and
 ///        CGAL's `vertex_point_map`, `vertex_index_map`, `face_index_map`, as for `geodesic_distances()`
 /// \return the diagram
 ///
 /// \throws Geodesic_error for what `geodesic_distances()` throws, when there is no source, and for
-///         `approximation`, `stop_vertices`, `max_distance` or an `algorithm` other than the MMP family
+///         `approximation`, `stop_vertices` or `max_distance` (every cell is whole and exact)
 template <class ConcurrencyTag = CGAL::Sequential_tag, class TriangleMesh, class Sources,
           class NamedParameters = parameters::Default_named_parameters_type>
 Geodesic_voronoi_diagram<TriangleMesh, typename boost::property_traits<
@@ -115,18 +123,42 @@ geodesic_voronoi_diagram(const TriangleMesh& tm, const Sources& sources,
 
   if constexpr(!is_default_parameter<NamedParameters, internal_np::max_distance_t>::value)
     throw Geodesic_error("a Voronoi diagram takes no max_distance: every cell is whole");
+  if constexpr(!is_default_parameter<NamedParameters, internal_np::stop_vertices_t>::value)
+    throw Geodesic_error("a Voronoi diagram takes no stop_vertices: every cell is whole");
   const internal::Solver_settings settings = internal::read_solver_settings(np, FWP_MMP);
-  if(settings.algorithm == VTP)
-    throw Geodesic_error("a Voronoi diagram is read from the windows of the MMP family, got algorithm VTP");
+  if(settings.approximation > 0)
+    throw Geodesic_error("a Voronoi diagram is exact: it takes no approximation");
   const internal::Mesh_setup<TriangleMesh, Vertex_point_map> mesh(tm, np);
   const internal::Mesh_cache& cache = mesh.cache();
-  internal::MMP_solver solver(cache, settings, parallel);
+  // The windows the diagram is read from: those MMP keeps on the edges, or with VTP those of
+  // every list it propagated, clipped into the same store as MMP's insertions clip them.
+  std::optional<internal::MMP_solver> mmp;
+  std::optional<internal::VTP_solver> vtp;
+  std::optional<internal::Edge_window_store> recorded;
+  internal::Insertion_output insertion;
+  if(settings.algorithm == VTP) {
+    vtp.emplace(cache, settings, parallel);
+    recorded.emplace(cache, Geodesics_3::min_window_length_ratio * cache.mean_edge_length, /*requeue_trimmed=*/false);
+    vtp->record_propagated_windows([&](int h, const std::vector<internal::Window>& list) {
+      for(const internal::Window& w : list)
+        recorded->insert(w, h, w.source, 0, insertion);
+      insertion.queued.clear();
+      insertion.updates.clear();
+    });
+  } else {
+    mmp.emplace(cache, settings, parallel);
+  }
+  internal::Solver_base& solver = vtp ? static_cast<internal::Solver_base&>(*vtp) : *mmp;
+  const internal::Edge_window_store& windows = vtp ? *recorded : mmp->windows();
   for(const internal::Source_point& s : mesh.source_points(sources))
     solver.add_source(s);
-  internal::run_solver<parallel>(solver, settings.number_of_threads);
-  const internal::Geodesic_path_tracer tracer(solver.windows(), solver.distances(), solver.nearest_sources(),
-                                              solver.sources(), solver.max_distance());
-  internal::Voronoi_builder builder(cache, solver.windows(), tracer);
+  if(vtp)
+    internal::run_solver<parallel>(*vtp, settings.number_of_threads);
+  else
+    internal::run_solver<parallel>(*mmp, settings.number_of_threads);
+  const internal::Geodesic_path_tracer tracer(windows, solver.distances(), solver.nearest_sources(), solver.sources(),
+                                              solver.max_distance());
+  internal::Voronoi_builder builder(cache, windows, tracer);
   internal::run_in_arena<parallel>(settings.number_of_threads, [&] { builder.run(solver.sources(), parallel); });
 
   Diagram diagram;

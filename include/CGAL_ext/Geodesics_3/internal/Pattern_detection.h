@@ -1194,7 +1194,7 @@ private:
     std::vector<vertex_descriptor> centres;
     for(const Detected_instance& d : result.instances)
       centres.push_back(m_vertex[d.center]);
-    const auto diagram = geodesic_voronoi_diagram<Concurrency>(m_tm, centres, solver_parameters());
+    const auto diagram = geodesic_voronoi_diagram<Concurrency>(m_tm, centres, solver_parameters().algorithm(VTP));
     result.arrangement_edges = diagram.dual_edges;
     result.arrangement_triangles = diagram.dual_triangles;
     std::vector<std::size_t> owner(m_sample_vertex.size(), none);

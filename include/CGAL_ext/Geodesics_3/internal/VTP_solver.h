@@ -16,6 +16,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <utility>
 #include <vector>
 
@@ -71,6 +72,7 @@ struct List_task
   // and those lists' half-edges (once there are children), so that the serial merge does not
   // read the mesh's opposites
   int to_ac_halfedge = -1, to_cb_halfedge = -1;
+  std::vector<Window> propagated; // the list's windows as propagated, when they are recorded
 };
 
 /// What a pseudo-source (a vertex, or a face point) emits, computed before it is applied: the
@@ -146,6 +148,17 @@ public:
       m_is_stop[v] = 1;
       m_stop_vertices.push_back(v);
     }
+  }
+
+  /// Hands every list's windows as they are propagated across its face (trimmed by the edge's
+  /// vertices and clipped against each other, before the children are made) to
+  /// `record(h, windows)`, h the list's half-edge, in the order of the merges (the same for
+  /// every number of threads). No path is dropped unless another is at least as short, so these
+  /// windows and the paths through a vertex give the distance at any point of any face they
+  /// enter (`geodesic_voronoi_diagram` reads them). Empty: none (the default).
+  void record_propagated_windows(std::function<void(int, const std::vector<Window>&)> record)
+  {
+    m_record = std::move(record);
   }
 
   /// Makes the solver ready for another run on the same mesh with the same settings, without
@@ -709,6 +722,7 @@ private:
     task.apex_distance = infinity();
     task.apex_source = -1;
     task.apex_arrival = Arrival{};
+    task.propagated.clear();
     windows.clear();
     const Halfedge_frame f = m_mesh.frame(h);
     const double d_from = m_distance[m_mesh.source(h)];
@@ -725,6 +739,8 @@ private:
       return;
     sort_by_start(buffers);
     prune_pairs(windows, m_min_clipped_overlap);
+    if(m_record)
+      task.propagated.assign(windows.begin(), windows.end());
 
     // "One angle, two sides": the window with the shortest path to the apex splits the edge.
     double best = infinity(), split = 0;
@@ -765,6 +781,8 @@ private:
   {
     ++m_statistics.lists_propagated;
     const int h = task.halfedge;
+    if(m_record && !task.propagated.empty())
+      m_record(h, task.propagated);
     if(task.apex_distance < infinity())
       relax(m_mesh.apex(h), task.apex_distance, task.apex_source, task.apex_arrival);
     if(task.to_ac.size)
@@ -920,6 +938,7 @@ private:
   double m_next_reset = 0;
   bool m_flushing = false; // lists are scheduled whether or not they are in the swept region
   const bool m_batched;    // take vertices from buckets, propagate lists in batches
+  std::function<void(int, const std::vector<Window>&)> m_record; // see record_propagated_windows
 };
 
 } // namespace internal
