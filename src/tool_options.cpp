@@ -22,11 +22,11 @@ namespace {
 /// The names of the algorithms that satisfy `wanted` (and keep windows, for paths), as
 /// "a, b and c" (`conjunction` "and" or "or").
 template <class Predicate>
-std::string algorithm_names(Predicate wanted, bool for_paths, const char* conjunction)
+std::string algorithm_names(Predicate wanted, bool exact_only, const char* conjunction)
 {
   std::vector<std::string> names;
   for(const Algorithm& a : algorithms)
-    if(wanted(a) && (!for_paths || keeps_windows(a)))
+    if(wanted(a) && (!exact_only || !a.approximate))
       names.push_back(a.name);
   std::string text;
   for(std::size_t i = 0; i < names.size(); ++i)
@@ -118,10 +118,12 @@ void add_path_command(CLI::App& app, Path_options& options)
   cmd->add_option("--target", options.target, std::string("The end of the path: ") + point_help)->required();
   cmd->add_option("--algorithm", options.solver.algorithm,
                   "Solver: fwp-mmp (windows bucket by bucket), mmp (windows in exact order), pmmp (fwp-mmp in "
-                  "parallel); all exact; default: fwp-mmp");
-  cmd->add_option("--threads", options.solver.threads, "pmmp: number of threads, at least 1; default: all cores");
+                  "parallel), vtp or pvtp (parallel; the windows VTP propagates across each face); all exact; "
+                  "default: fwp-mmp");
+  cmd->add_option("--threads", options.solver.threads, "pvtp and pmmp: number of threads, at least 1; default: all cores");
   cmd->add_option("--batch-size", options.solver.batch_size,
-                  "pmmp: windows propagated together, at least 1; default: " +
+                  "pvtp: lists, pmmp: windows propagated together, at least 1; default: " +
+                    std::to_string(CGAL_ext::default_batch_size) + " and " +
                     std::to_string(CGAL_ext::default_window_batch_size));
   cmd->add_option("--max-distance", options.solver.max_distance,
                   "Stop the propagation at this distance; a farther target is an error");
@@ -137,18 +139,19 @@ void add_path_command(CLI::App& app, Path_options& options)
 // ---------------------------------------------------------------------------------------------
 // The solver
 
-Solver_choice solver_choice(const Solver_options& options, bool for_paths)
+Solver_choice solver_choice(const Solver_options& options, bool exact_only)
 {
   const auto any = [](const Algorithm&) { return true; };
   Solver_choice choice;
   const auto found = std::find_if(std::begin(algorithms), std::end(algorithms),
                                   [&](const Algorithm& a) { return options.algorithm == a.name; });
   if(found == std::end(algorithms))
-    throw Tool_error("unknown algorithm '" + options.algorithm + "' (use " + algorithm_names(any, for_paths, "or") +
+    throw Tool_error("unknown algorithm '" + options.algorithm + "' (use " + algorithm_names(any, exact_only, "or") +
                      ")");
-  if(for_paths && !keeps_windows(*found))
-    throw Tool_error(std::string("--algorithm ") + found->name + " keeps no windows and cannot trace paths (use " +
-                     algorithm_names(any, true, "or") + ")");
+  if(exact_only && found->approximate)
+    throw Tool_error(std::string("--algorithm ") + found->name +
+                     " is approximate: paths and Voronoi diagrams are exact (use " + algorithm_names(any, true, "or") +
+                     ")");
   choice.algorithm = found;
   if(found->parallel && !parallel_available)
     throw Tool_error(std::string("--algorithm ") + found->name + " needs TBB; this geodesic was built without it");
@@ -158,7 +161,7 @@ Solver_choice solver_choice(const Solver_options& options, bool for_paths)
     return Tool_error(std::string(option) + " must be " + expected + ", got " + number_text(value));
   };
   const auto applies_to = [&](const char* option, auto wanted) {
-    return Tool_error(std::string(option) + " applies to " + algorithm_names(wanted, for_paths, "and") + " only");
+    return Tool_error(std::string(option) + " applies to " + algorithm_names(wanted, exact_only, "and") + " only");
   };
   if(!(options.max_distance >= 0))
     throw invalid("--max-distance", "a non-negative number", options.max_distance);

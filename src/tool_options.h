@@ -111,8 +111,9 @@ struct Solver_choice
   double max_distance = std::numeric_limits<double>::infinity();
 };
 
-/// Checks the solver options of `distances`, or of `path` (`for_paths`: the MMP family only).
-Solver_choice solver_choice(const Solver_options& options, bool for_paths);
+/// Checks the solver options of `distances`, or of `path` and `voronoi` (`exact_only`: every
+/// solver but the approximate ones; their windows are read anywhere on the surface).
+Solver_choice solver_choice(const Solver_options& options, bool exact_only);
 
 // ---------------------------------------------------------------------------------------------
 // Sources and targets

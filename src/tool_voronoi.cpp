@@ -86,11 +86,7 @@ bool write_dual_obj(std::ostream& os, const std::vector<Point>& sources,
 int run_voronoi(const Voronoi_options& options)
 {
   // Validate the command line before the (possibly long) reading and solving.
-  for(const Algorithm& a : algorithms)
-    if(options.solver.algorithm == a.name && a.approximate)
-      throw Tool_error(std::string("--algorithm ") + a.name +
-                       " is approximate: a Voronoi diagram is exact (use vtp, pvtp, fwp-mmp, mmp or pmmp)");
-  const Solver_choice choice = solver_choice(options.solver, false);
+  const Solver_choice choice = solver_choice(options.solver, true);
   const std::vector<Surface_point> sources = parse_sources(options.sources);
   const Output_format cells_format = output_format(options.output);
   const Output_format bisectors_format =

@@ -386,7 +386,10 @@ TEST(Paths_bad_input, Parameters)
   const std::vector<Vertex> source = {Vertex(0)};
   Paths p(m);
   p.add_source(Vertex(0));
-  EXPECT_TRUE(throws_geodesic_error([&] { p.build(params::algorithm(CGAL_ext::VTP)); }, {"MMP"}));
+  EXPECT_TRUE(throws_geodesic_error([&] { p.build(params::algorithm(CGAL_ext::VTP).approximation(8.)); },
+                                    {"approximation"}));
+  EXPECT_TRUE(throws_geodesic_error([&] { p.build(params::algorithm(CGAL_ext::VTP).stop_vertices(source)); },
+                                    {"stop_vertices"}));
   EXPECT_FALSE(p.is_built());
   EXPECT_TRUE(throws_geodesic_error([&] { p.build(params::max_distance(-1.)); }, {"max distance"}));
   EXPECT_TRUE(throws_geodesic_error([&] { p.build(params::batch_size(0)); }, {"batch size"}));
@@ -394,7 +397,8 @@ TEST(Paths_bad_input, Parameters)
   pp.add_source(Vertex(0));
   EXPECT_TRUE(throws_geodesic_error([&] { pp.build(params::number_of_threads(-1)); }, {"threads"}));
   EXPECT_TRUE(throws_geodesic_error([&] { pp.build(params::batch_size(0)); }, {"batch size"}));
-  EXPECT_TRUE(throws_geodesic_error([&] { pp.build(params::algorithm(CGAL_ext::VTP)); }, {"MMP"}));
+  EXPECT_TRUE(throws_geodesic_error([&] { pp.build(params::algorithm(CGAL_ext::VTP).approximation(8.)); },
+                                    {"approximation"}));
   for(CGAL_ext::Geodesic_algorithm a : {CGAL_ext::MMP, CGAL_ext::FWP_MMP}) {
     EXPECT_TRUE(throws_geodesic_error([&] { solve(m, source, params::algorithm(a).approximation(8.)); },
                                       {"approximation"}));
@@ -648,7 +652,8 @@ TEST(Paths_edge_cases, RefusedBuildKeepsThePreviousOneAndMovesKeepTheBuild)
   const std::vector<double> before = class_distances(m, *p);
   const Face_location l = location(3000, 0.1, 0.6);
   const std::vector<Path_point> path = surface_path(*p, l);
-  EXPECT_TRUE(throws_geodesic_error([&] { p->build(params::algorithm(CGAL_ext::VTP)); }, {"MMP"}));
+  EXPECT_TRUE(throws_geodesic_error([&] { p->build(params::algorithm(CGAL_ext::VTP).approximation(8.)); },
+                                    {"approximation"}));
   EXPECT_TRUE(throws_geodesic_error([&] { p->build(params::max_distance(-1.)); }, {"max distance"}));
   EXPECT_TRUE(throws_geodesic_error([&] { p->build(params::batch_size(0)); }, {"batch size"}));
   ASSERT_TRUE(p->is_built());

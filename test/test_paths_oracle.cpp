@@ -1,6 +1,6 @@
 // Copyright (c) 2026 The CGAL_ext geodesics developers.
-// Surface_mesh_geodesic_paths (MMP, FWP-MMP, PMMP) on real meshes: exact distances at vertices
-// and at any point of a face, nearest sources and shortest paths, against the oracle
+// Surface_mesh_geodesic_paths (MMP, FWP-MMP, PMMP, and built from VTP's windows) on real meshes:
+// exact distances at vertices and at any point of a face, nearest sources and shortest paths, against the oracle
 // CGAL::Surface_mesh_shortest_path and against the exact VTP solver.
 //
 // Tolerances: distances within 1e-9 of the bounding-box diagonal of the oracle's and 1e-12 of
@@ -97,6 +97,8 @@ void check_vertex_distances(const Mesh& m, const Sources& s, const std::string& 
   auto mmp = built<Paths>(m, s, params::algorithm(CGAL_ext::MMP));
   auto fwp = built<Paths>(m, s); // FWP-MMP, the default
   auto pmmp = built<Parallel_paths>(m, s, params::number_of_threads(2));
+  auto vtp_windows = built<Paths>(m, s, params::algorithm(CGAL_ext::VTP));
+  auto pvtp_windows = built<Parallel_paths>(m, s, params::algorithm(CGAL_ext::VTP).number_of_threads(2));
   const std::vector<std::pair<std::string, std::vector<double>>> runs = {
     {"geodesic_distances MMP", solve_mixed(m, s.vertices, s.faces, params::algorithm(CGAL_ext::MMP))},
     {"geodesic_distances FWP-MMP", solve_mixed(m, s.vertices, s.faces, params::algorithm(CGAL_ext::FWP_MMP))},
@@ -104,7 +106,9 @@ void check_vertex_distances(const Mesh& m, const Sources& s, const std::string& 
                                   m, s.vertices, s.faces, params::algorithm(CGAL_ext::FWP_MMP).number_of_threads(2))},
     {"class MMP", class_distances(m, *mmp)},
     {"class FWP-MMP", class_distances(m, *fwp)},
-    {"class PMMP", class_distances(m, *pmmp)}};
+    {"class PMMP", class_distances(m, *pmmp)},
+    {"class VTP", class_distances(m, *vtp_windows)},
+    {"class PVTP", class_distances(m, *pvtp_windows)}};
   for(const auto& r : runs) {
     EXPECT_TRUE(agrees(r.second, reference, diag, oracle_tolerance, label + " " + r.first + " vs oracle"));
     EXPECT_TRUE(agrees(r.second, vtp, diag, vtp_tolerance, label + " " + r.first + " vs VTP"));
@@ -119,6 +123,8 @@ void check_vertex_distances(const Mesh& m, const Sources& s, const std::string& 
   EXPECT_TRUE(nearest_sources_are_right(m, *mmp, per_source)) << label << " MMP";
   EXPECT_TRUE(nearest_sources_are_right(m, *fwp, per_source)) << label << " FWP-MMP";
   EXPECT_TRUE(nearest_sources_are_right(m, *pmmp, per_source)) << label << " PMMP";
+  EXPECT_TRUE(nearest_sources_are_right(m, *vtp_windows, per_source)) << label << " VTP";
+  EXPECT_TRUE(nearest_sources_are_right(m, *pvtp_windows, per_source)) << label << " PVTP";
   if(s.vertices.size() + s.faces.size() > 1) { // every source is the nearest of some vertex
     std::vector<int> named(s.size(), 0);
     for(Vertex v : m.vertices())
@@ -254,6 +260,7 @@ TEST_P(Face_point_distances, MatchOracle)
   auto mmp = built<Paths>(m, s, params::algorithm(CGAL_ext::MMP));
   auto fwp = built<Paths>(m, s);
   auto pmmp = built<Parallel_paths>(m, s);
+  auto vtp_windows = built<Paths>(m, s, params::algorithm(CGAL_ext::VTP));
   // each source alone, for the nearest source: the oracle on small meshes, else our own FWP-MMP
   // (checked against the oracle from single sources by the other cases)
   std::vector<std::unique_ptr<Oracle_paths>> alone;
@@ -271,7 +278,7 @@ TEST_P(Face_point_distances, MatchOracle)
         alone_ours.push_back(built<Paths>(m, one));
     }
   }
-  double worst[3] = {0, 0, 0};
+  double worst[4] = {0, 0, 0, 0};
   std::size_t checked = 0, on_edges = 0, on_border = 0, oracle_wrong_on_border = 0;
   for(const Face_location& t : face_targets(m, 240, 5)) {
     if(!reference.can_query(t.first))
@@ -285,11 +292,11 @@ TEST_P(Face_point_distances, MatchOracle)
       oracle_wrong_on_border += !(max_difference({o}, {exact}) <= oracle_tolerance * diag);
       o = exact;
     }
-    const double d[3] = {mmp->distance(t), fwp->distance(t), pmmp->distance(t)};
-    for(int a = 0; a < 3; ++a) {
+    const double d[4] = {mmp->distance(t), fwp->distance(t), pmmp->distance(t), vtp_windows->distance(t)};
+    for(int a = 0; a < 4; ++a) {
       const double e = max_difference({d[a]}, {o});
       if(e > oracle_tolerance * diag)
-        ADD_FAILURE() << label << ": algorithm " << a << " (MMP, FWP-MMP, PMMP) at " << describe_target(t) << ": "
+        ADD_FAILURE() << label << ": algorithm " << a << " (MMP, FWP-MMP, PMMP, VTP) at " << describe_target(t) << ": "
                       << d[a] << ", reference " << o;
       worst[a] = std::max(worst[a], e / diag);
     }
@@ -312,6 +319,7 @@ TEST_P(Face_point_distances, MatchOracle)
       EXPECT_EQ(ns, Paths::no_source) << label << ", " << describe_target(t);
       EXPECT_EQ(mmp->nearest_source(t), Paths::no_source) << label << ", " << describe_target(t);
       EXPECT_EQ(pmmp->nearest_source(t), Parallel_paths::no_source) << label << ", " << describe_target(t);
+      EXPECT_EQ(vtp_windows->nearest_source(t), Paths::no_source) << label << ", " << describe_target(t);
       continue;
     }
     ASSERT_LT(ns, s.size()) << label << ", " << describe_target(t);
@@ -319,7 +327,7 @@ TEST_P(Face_point_distances, MatchOracle)
       EXPECT_EQ(ns, 0u);
       continue;
     }
-    for(const std::size_t n : {ns, mmp->nearest_source(t), pmmp->nearest_source(t)}) {
+    for(const std::size_t n : {ns, mmp->nearest_source(t), pmmp->nearest_source(t), vtp_windows->nearest_source(t)}) {
       ASSERT_LT(n, s.size());
       const double named = alone.empty() ? alone_ours[n]->distance(t) : alone[n]->distance(t);
       EXPECT_LE(std::abs(named - d[1]), oracle_tolerance * diag)
@@ -329,7 +337,7 @@ TEST_P(Face_point_distances, MatchOracle)
   std::cout << "[ error    ] " << label << ": " << checked << " face points (" << on_edges << " on inner edges, "
             << on_border << " on border edges, where the oracle was wrong at " << oracle_wrong_on_border
             << "), max |ours - reference| / diag = " << worst[0] << " (MMP), " << worst[1] << " (FWP-MMP), "
-            << worst[2] << " (PMMP)" << std::endl;
+            << worst[2] << " (PMMP), " << worst[3] << " (VTP)" << std::endl;
   EXPECT_GT(checked, 200u);
 }
 
@@ -454,14 +462,15 @@ TEST_P(Shortest_paths, ValidAndMatchOracle)
   auto mmp = built<Paths>(m, s, params::algorithm(CGAL_ext::MMP));
   auto fwp = built<Paths>(m, s);
   auto pmmp = built<Parallel_paths>(m, s);
+  auto vtp_windows = built<Paths>(m, s, params::algorithm(CGAL_ext::VTP));
   const std::vector<Vertex> vertex_targets = spread_vertices(m, 30, 101);
   std::vector<Face_location> face_targets_kept;
   for(const Face_location& l : face_targets(m, 30, 3))
     if(reference.can_query(l.first))
       face_targets_kept.push_back(l);
   Path_statistics all;
-  const char* algorithm_names[] = {"MMP", "FWP-MMP", "PMMP"};
-  for(int a = 0; a < 3; ++a) {
+  const char* algorithm_names[] = {"MMP", "FWP-MMP", "PMMP", "VTP"};
+  for(int a = 0; a < 4; ++a) {
     const std::string label = name + " " + source_names[kind] + " " + algorithm_names[a];
     Path_statistics stats;
     auto check = [&](const auto& target) { // the build of algorithm a
@@ -469,8 +478,10 @@ TEST_P(Shortest_paths, ValidAndMatchOracle)
         check_path(m, s, *mmp, target, reference, stats, label);
       else if(a == 1)
         check_path(m, s, *fwp, target, reference, stats, label);
-      else
+      else if(a == 2)
         check_path(m, s, *pmmp, target, reference, stats, label);
+      else
+        check_path(m, s, *vtp_windows, target, reference, stats, label);
     };
     for(Vertex v : vertex_targets)
       check(v);

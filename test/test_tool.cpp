@@ -576,10 +576,10 @@ const double not_a_number = std::numeric_limits<double>::quiet_NaN();
 
 const Bad_solver bad_solvers[] = {
   {false, {"dijkstra"}, "unknown algorithm 'dijkstra' (use vtp, pvtp, avtp, pavtp, fwp-mmp, mmp or pmmp)"},
-  {true, {"dijkstra"}, "unknown algorithm 'dijkstra' (use fwp-mmp, mmp or pmmp)"},
+  {true, {"dijkstra"}, "unknown algorithm 'dijkstra' (use vtp, pvtp, fwp-mmp, mmp or pmmp)"},
   {false, {"VTP"}, "unknown algorithm 'VTP' (use vtp, pvtp, avtp, pavtp, fwp-mmp, mmp or pmmp)"},
-  {true, {"vtp"}, "--algorithm vtp keeps no windows and cannot trace paths (use fwp-mmp, mmp or pmmp)"},
-  {true, {"pavtp"}, "--algorithm pavtp keeps no windows and cannot trace paths (use fwp-mmp, mmp or pmmp)"},
+  {true, {"avtp"}, "--algorithm avtp is approximate: paths and Voronoi diagrams are exact (use vtp, pvtp, fwp-mmp, mmp or pmmp)"},
+  {true, {"pavtp"}, "--algorithm pavtp is approximate: paths and Voronoi diagrams are exact (use vtp, pvtp, fwp-mmp, mmp or pmmp)"},
   {false, {"vtp", 8.}, "--lambda applies to avtp and pavtp only"},
   {false, {"pmmp", 8.}, "--lambda applies to avtp and pavtp only"},
   {false, {"avtp", 0.}, "--lambda must be a positive, finite number, got 0"},
@@ -588,11 +588,11 @@ const Bad_solver bad_solvers[] = {
   {false, {"avtp", not_a_number}, "--lambda must be a positive, finite number, got nan"},
   {false, {"vtp", {}, 2}, "--threads applies to pvtp, pavtp and pmmp only"},
   {false, {"avtp", {}, 2}, "--threads applies to pvtp, pavtp and pmmp only"},
-  {true, {"fwp-mmp", {}, 2}, "--threads applies to pmmp only"},
+  {true, {"fwp-mmp", {}, 2}, "--threads applies to pvtp and pmmp only"},
   {false, {"pvtp", {}, 0}, "--threads must be a positive integer, got 0"},
   {true, {"pmmp", {}, -2}, "--threads must be a positive integer, got -2"},
   {false, {"mmp", {}, {}, 8}, "--batch-size applies to pvtp, avtp, pavtp and pmmp only"},
-  {true, {"mmp", {}, {}, 8}, "--batch-size applies to pmmp only"},
+  {true, {"mmp", {}, {}, 8}, "--batch-size applies to pvtp and pmmp only"},
   {false, {"avtp", {}, {}, 0}, "--batch-size must be a positive integer, got 0"},
   {true, {"pmmp", {}, {}, -5}, "--batch-size must be a positive integer, got -5"},
   {false, {"vtp", {}, {}, {}, -1.}, "--max-distance must be a non-negative number, got -1"},
@@ -1294,7 +1294,7 @@ TEST_F(Tool, path_is_the_same_with_every_algorithm)
   const std::vector<Point> fwp = path_points(args);
   EXPECT_EQ(path_points(args + " --algorithm fwp-mmp"), fwp) << "the default is not fwp-mmp";
   const double length = polyline_length(fwp);
-  for(const char* algorithm : {"mmp", "pmmp"}) {
+  for(const char* algorithm : {"mmp", "pmmp", "vtp", "pvtp"}) {
     const std::vector<Point> p = path_points(args + " --algorithm " + algorithm);
     EXPECT_NEAR(polyline_length(p), length, 1e-9 * length) << algorithm;
     EXPECT_EQ(p.front(), fwp.front()) << algorithm;
@@ -1780,7 +1780,7 @@ const Bad_case bad_cases[] = {
   {"voronoi_bisectors_ply", V + " --source 0,100 --bisectors b.ply", "c.txt", "--bisectors 'b.ply': use .obj or .txt"},
   {"voronoi_dual_txt", V + " --source 0,100 --dual d.txt", "c.txt", "the dual graph is written as .obj"},
   {"voronoi_with_avtp", V + " --source 0,100 --algorithm avtp", "c.txt",
-   "--algorithm avtp is approximate: a Voronoi diagram is exact (use vtp, pvtp, fwp-mmp, mmp or pmmp)"},
+   "--algorithm avtp is approximate: paths and Voronoi diagrams are exact (use vtp, pvtp, fwp-mmp, mmp or pmmp)"},
   {"voronoi_same_files", V + " --source 0,100 --bisectors c.txt", "c.txt", "name the same file 'c.txt'"},
   {"voronoi_source_out_of_range", V + " --source 0,2775", "c.txt", "source '2775'"},
   {"voronoi_missing_source", V, "c.txt", "--source"},

@@ -12,6 +12,7 @@
 #include <CGAL_ext/Geodesics_3/internal/Geodesic_path_tracer.h>
 #include <CGAL_ext/Geodesics_3/internal/Geodesic_setup.h>
 #include <CGAL_ext/Geodesics_3/internal/MMP_solver.h>
+#include <CGAL_ext/Geodesics_3/internal/Recorded_windows.h>
 
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/tags.h>
@@ -197,9 +198,11 @@ public:
   ///
   /// \cgalNamedParamsBegin
   ///   \cgalParamNBegin{algorithm}
-  ///     \cgalParamDescription{sequential only: `CGAL_ext::MMP` (windows in exact order, from a binary
-  ///                           heap) or `CGAL_ext::FWP_MMP` (bucket by bucket, faster); with
-  ///                           `CGAL::Parallel_tag` the build is always PMMP}
+  ///     \cgalParamDescription{`CGAL_ext::MMP` (windows in exact order, from a binary heap, sequential
+  ///                           only), `CGAL_ext::FWP_MMP` (bucket by bucket; PMMP with
+  ///                           `CGAL::Parallel_tag`), or `CGAL_ext::VTP` (the windows VTP propagates
+  ///                           across each face, clipped into the same store; PVTP with
+  ///                           `CGAL::Parallel_tag`): all exact, the same distances to round-off}
   ///     \cgalParamType{`CGAL_ext::Geodesic_algorithm`}
   ///     \cgalParamDefault{`CGAL_ext::FWP_MMP`}
   ///   \cgalParamNEnd
@@ -225,9 +228,9 @@ public:
   ///   \cgalParamNEnd
   /// \cgalNamedParamsEnd
   ///
-  /// \throws Geodesic_error when no source was added, `algorithm` is not an MMP variant,
-  ///         `max_distance` is negative, `number_of_threads` negative or `batch_size` zero, or
-  ///         when `approximation` or `stop_vertices` (VTP's parameters) are given
+  /// \throws Geodesic_error when no source was added, `max_distance` is negative,
+  ///         `number_of_threads` negative or `batch_size` zero, or when `approximation` or
+  ///         `stop_vertices` are given
   template <class NamedParameters = parameters::Default_named_parameters_type>
   void build(const NamedParameters& np = parameters::default_values())
   {
@@ -236,24 +239,29 @@ public:
     constexpr bool parallel = std::is_same<ConcurrencyTag, CGAL::Parallel_tag>::value;
     internal::check_has_sources(m_mesh.cache(), m_sources);
     const internal::Solver_settings settings = internal::read_solver_settings(np, FWP_MMP);
-    if(settings.algorithm == VTP)
-      throw Geodesic_error("Surface_mesh_geodesic_paths builds with MMP or FWP_MMP only, got algorithm VTP");
-    auto solver = std::make_unique<internal::MMP_solver>(m_mesh.cache(), settings, parallel);
-    for(const auto& s : m_sources)
-      solver->add_source(s);
+    if(settings.approximation > 0)
+      throw Geodesic_error("Surface_mesh_geodesic_paths builds exact windows: it takes no approximation");
+    if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::stop_vertices_t>::value)
+      throw Geodesic_error("Surface_mesh_geodesic_paths builds every window: it takes no stop_vertices");
     // The parameters are valid: the previous result goes now, so that two sets of windows are
     // never held at once.
     forget_build();
-    internal::run_solver<parallel>(*solver, settings.number_of_threads);
-    m_tracer = std::make_unique<internal::Geodesic_path_tracer>(solver->windows(), solver->distances(),
-                                                                solver->nearest_sources(), solver->sources(),
-                                                                solver->max_distance());
-    m_solver = std::move(solver);
-    m_statistics = internal::report_statistics(settings, m_solver->statistics(), m_mesh.seconds());
+    if(settings.algorithm == VTP) {
+      m_vtp = std::make_unique<internal::VTP_with_windows>(m_mesh.cache(), settings, parallel);
+      run(m_vtp->solver(), settings);
+      m_tracer = std::make_unique<internal::Geodesic_path_tracer>(
+        m_vtp->windows(), built().distances(), built().nearest_sources(), built().sources(), built().max_distance());
+    } else {
+      m_mmp = std::make_unique<internal::MMP_solver>(m_mesh.cache(), settings, parallel);
+      run(*m_mmp, settings);
+      m_tracer = std::make_unique<internal::Geodesic_path_tracer>(
+        m_mmp->windows(), built().distances(), built().nearest_sources(), built().sources(), built().max_distance());
+    }
+    m_statistics = internal::report_statistics(settings, built().statistics(), m_mesh.seconds());
   }
 
   /// \return whether `build()` ran since the sources last changed
-  bool is_built() const { return m_solver != nullptr; }
+  bool is_built() const { return m_mmp || m_vtp; }
 
   /// \name Queries
   /// Each throws `Geodesic_error` when `build()` has not run since the sources last changed, or
@@ -362,14 +370,26 @@ private:
   void forget_build()
   {
     m_tracer.reset(); // it refers to the solver
-    m_solver.reset();
+    m_mmp.reset();
+    m_vtp.reset();
   }
 
-  const Geodesics_3::internal::MMP_solver& built() const
+  template <class Solver>
+  void run(Solver& solver, const Geodesics_3::internal::Solver_settings& settings)
   {
-    if(!m_solver)
+    constexpr bool parallel = std::is_same<ConcurrencyTag, CGAL::Parallel_tag>::value;
+    for(const auto& s : m_sources)
+      solver.add_source(s);
+    Geodesics_3::internal::run_solver<parallel>(solver, settings.number_of_threads);
+  }
+
+  const Geodesics_3::internal::Solver_base& built() const
+  {
+    if(m_vtp)
+      return m_vtp->solver();
+    if(!m_mmp)
       throw Geodesic_error("build() must be called after the sources are added and before any query");
-    return *m_solver;
+    return *m_mmp;
   }
   const Geodesics_3::internal::Geodesic_path_tracer& tracer() const
   {
@@ -436,7 +456,9 @@ private:
   // move of this object.
   Mesh_setup m_mesh;
   std::vector<Geodesics_3::internal::Source_point> m_sources;
-  std::unique_ptr<Geodesics_3::internal::MMP_solver> m_solver;
+  // the windows of the last build: MMP's, or VTP's (one of the two)
+  std::unique_ptr<Geodesics_3::internal::MMP_solver> m_mmp;
+  std::unique_ptr<Geodesics_3::internal::VTP_with_windows> m_vtp;
   std::unique_ptr<Geodesics_3::internal::Geodesic_path_tracer> m_tracer;
   Geodesic_statistics m_statistics;
 };

@@ -14,7 +14,7 @@
 #include <CGAL_ext/Geodesics_3/internal/Geodesic_setup.h>
 #include <CGAL_ext/Geodesics_3/internal/Geodesic_voronoi.h>
 #include <CGAL_ext/Geodesics_3/internal/MMP_solver.h>
-#include <CGAL_ext/Geodesics_3/internal/VTP_solver.h>
+#include <CGAL_ext/Geodesics_3/internal/Recorded_windows.h>
 
 #include <CGAL/tags.h>
 
@@ -130,30 +130,20 @@ geodesic_voronoi_diagram(const TriangleMesh& tm, const Sources& sources,
     throw Geodesic_error("a Voronoi diagram is exact: it takes no approximation");
   const internal::Mesh_setup<TriangleMesh, Vertex_point_map> mesh(tm, np);
   const internal::Mesh_cache& cache = mesh.cache();
-  // The windows the diagram is read from: those MMP keeps on the edges, or with VTP those of
-  // every list it propagated, clipped into the same store as MMP's insertions clip them.
+  // The windows the diagram is read from: those MMP keeps on the edges, or VTP's as it
+  // propagated them
   std::optional<internal::MMP_solver> mmp;
-  std::optional<internal::VTP_solver> vtp;
-  std::optional<internal::Edge_window_store> recorded;
-  internal::Insertion_output insertion;
-  if(settings.algorithm == VTP) {
+  std::optional<internal::VTP_with_windows> vtp;
+  if(settings.algorithm == VTP)
     vtp.emplace(cache, settings, parallel);
-    recorded.emplace(cache, Geodesics_3::min_window_length_ratio * cache.mean_edge_length, /*requeue_trimmed=*/false);
-    vtp->record_propagated_windows([&](int h, const std::vector<internal::Window>& list) {
-      for(const internal::Window& w : list)
-        recorded->insert(w, h, w.source, 0, insertion);
-      insertion.queued.clear();
-      insertion.updates.clear();
-    });
-  } else {
+  else
     mmp.emplace(cache, settings, parallel);
-  }
-  internal::Solver_base& solver = vtp ? static_cast<internal::Solver_base&>(*vtp) : *mmp;
-  const internal::Edge_window_store& windows = vtp ? *recorded : mmp->windows();
+  internal::Solver_base& solver = vtp ? static_cast<internal::Solver_base&>(vtp->solver()) : *mmp;
+  const internal::Edge_window_store& windows = vtp ? vtp->windows() : mmp->windows();
   for(const internal::Source_point& s : mesh.source_points(sources))
     solver.add_source(s);
   if(vtp)
-    internal::run_solver<parallel>(*vtp, settings.number_of_threads);
+    internal::run_solver<parallel>(vtp->solver(), settings.number_of_threads);
   else
     internal::run_solver<parallel>(*mmp, settings.number_of_threads);
   const internal::Geodesic_path_tracer tracer(windows, solver.distances(), solver.nearest_sources(), solver.sources(),

@@ -1,0 +1,58 @@
+// Copyright (c) 2026 The CGAL_ext geodesics developers.
+#ifndef CGAL_EXT_GEODESICS_3_INTERNAL_RECORDED_WINDOWS_H
+#define CGAL_EXT_GEODESICS_3_INTERNAL_RECORDED_WINDOWS_H
+
+// A VTP (PVTP) run whose windows are kept on the edges as MMP keeps its own, so that the path
+// tracer (distances anywhere, shortest paths) and the Voronoi diagram can read them.
+
+#include <CGAL_ext/Geodesics_3/Tolerances.h>
+#include <CGAL_ext/Geodesics_3/internal/Edge_window_store.h>
+#include <CGAL_ext/Geodesics_3/internal/Mesh_cache.h>
+#include <CGAL_ext/Geodesics_3/internal/Solver_settings.h>
+#include <CGAL_ext/Geodesics_3/internal/VTP_solver.h>
+
+#include <vector>
+
+namespace CGAL_ext {
+namespace Geodesics_3 {
+namespace internal {
+
+/// VTP with every list's windows, as they cross their face, clipped into an `Edge_window_store`
+/// (in merge order, the same for every number of threads). VTP drops a path only where another
+/// one is at least as short (a vertex's distance and the segment from it, another window of the
+/// list, or the kinked path through Rule 1's split point, never a shortest one), so the
+/// shortest path to any point of a face enters it through one of its edges in a stored window
+/// or passes through one of its corners: the tracer reads them as it reads MMP's.
+/// Not copyable: the solver hands its windows to this object.
+class VTP_with_windows
+{
+public:
+  VTP_with_windows(const Mesh_cache& mesh, const Solver_settings& settings, bool parallel)
+    : m_solver(mesh, settings, parallel)
+    , m_windows(mesh, min_window_length_ratio * mesh.mean_edge_length, /*requeue_trimmed=*/false)
+  {
+    m_solver.record_propagated_windows([this](int h, const std::vector<Window>& list) {
+      for(const Window& w : list)
+        m_windows.insert(w, h, w.source, 0, m_insertion);
+      m_insertion.queued.clear(); // nothing is queued: the store is only read
+      m_insertion.updates.clear();
+    });
+  }
+  VTP_with_windows(const VTP_with_windows&) = delete;
+  VTP_with_windows& operator=(const VTP_with_windows&) = delete;
+
+  VTP_solver& solver() { return m_solver; }
+  const VTP_solver& solver() const { return m_solver; }
+  const Edge_window_store& windows() const { return m_windows; }
+
+private:
+  VTP_solver m_solver;
+  Edge_window_store m_windows;
+  Insertion_output m_insertion;
+};
+
+} // namespace internal
+} // namespace Geodesics_3
+} // namespace CGAL_ext
+
+#endif // CGAL_EXT_GEODESICS_3_INTERNAL_RECORDED_WINDOWS_H
