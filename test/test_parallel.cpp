@@ -323,10 +323,10 @@ TEST(Parallel, bad_parameters_throw)
 }
 
 // ---------------------------------------------------------------------------------------------
-// PMMP (Surface_mesh_geodesic_paths and geodesic_distances with CGAL::Parallel_tag): for a given
-// batch size, the same windows whatever the number of threads, so bit-identical distances (at
-// vertices and at face points), nearest sources and paths. The mesh is small (2.8k vertices)
-// because this also runs under ThreadSanitizer.
+// PMMP (Surface_mesh_geodesic_paths and geodesic_distances with CGAL::Parallel_tag), and the
+// class built from PVTP's windows: for a given batch size, the same windows whatever the number
+// of threads, so bit-identical distances (at vertices and at face points), nearest sources and
+// paths. The mesh is small (2.8k vertices) because this also runs under ThreadSanitizer.
 
 typedef CGAL_ext::Surface_mesh_geodesic_paths<Mesh, CGAL::Parallel_tag> Parallel_paths;
 
@@ -338,73 +338,77 @@ struct Pmmp_answers
   std::size_t windows = 0, deferred = 0;
 };
 
-TEST(Parallel_paths, pmmp_is_identical_for_every_thread_count_and_matches_vtp)
+TEST(Parallel_paths, pmmp_and_pvtp_windows_are_identical_for_every_thread_count_and_match_vtp)
 {
-  const Mesh& m = test_mesh("elephant");
-  const double tolerance = 1e-12 * bbox_diagonal(m);
-  const std::size_t nf = m.number_of_faces();
-  const std::vector<Vertex> vertex_sources = {Vertex(0), Vertex(m.number_of_vertices() / 2)};
-  const std::vector<Face_location> face_sources = {location(nf / 3, 0.2, 0.3), location(2 * nf / 3, 0., 0.4)};
-  const std::vector<double> vtp = solve_mixed(m, vertex_sources, face_sources);
-  const std::vector<Vertex> vertex_targets = spread_vertices(m, 25, 7);
-  std::vector<Face_location> point_targets;
-  for(std::size_t i = 0; i < 25; ++i)
-    point_targets.push_back(i % 2 ? location((i * nf) / 25 + 3, 0.3, 0.25) : location((i * nf) / 25 + 1, 0., 0.35));
+  for(CGAL_ext::Geodesic_algorithm algorithm : {CGAL_ext::FWP_MMP, CGAL_ext::VTP}) {
+    SCOPED_TRACE(algorithm == CGAL_ext::VTP ? "PVTP's windows" : "PMMP");
+    const Mesh& m = test_mesh("elephant");
+    const double tolerance = 1e-12 * bbox_diagonal(m);
+    const std::size_t nf = m.number_of_faces();
+    const std::vector<Vertex> vertex_sources = {Vertex(0), Vertex(m.number_of_vertices() / 2)};
+    const std::vector<Face_location> face_sources = {location(nf / 3, 0.2, 0.3), location(2 * nf / 3, 0., 0.4)};
+    const std::vector<double> vtp = solve_mixed(m, vertex_sources, face_sources);
+    const std::vector<Vertex> vertex_targets = spread_vertices(m, 25, 7);
+    std::vector<Face_location> point_targets;
+    for(std::size_t i = 0; i < 25; ++i)
+      point_targets.push_back(i % 2 ? location((i * nf) / 25 + 3, 0.3, 0.25) : location((i * nf) / 25 + 1, 0., 0.35));
 
-  auto run = [&](int threads, std::size_t batch) {
-    Pmmp_answers a;
-    Parallel_paths p(m);
-    p.add_sources(vertex_sources);
-    p.add_sources(face_sources);
-    CGAL_ext::Geodesic_statistics stats;
-    p.build(number_of_threads(threads).batch_size(batch).statistics(stats));
-    a.windows = stats.windows_created;
-    a.deferred = stats.windows_deferred;
-    for(Vertex v : m.vertices()) {
-      a.vertex_distances.push_back(p.distance(v));
-      a.sources.push_back(p.nearest_source(v));
-    }
-    for(const Face_location& l : point_targets) {
-      a.point_distances.push_back(p.distance(l));
-      a.sources.push_back(p.nearest_source(l));
-      a.paths.emplace_back();
-      p.shortest_path_surface_points(l, std::back_inserter(a.paths.back()));
-    }
-    for(Vertex v : vertex_targets) {
-      a.paths.emplace_back();
-      p.shortest_path_surface_points(v, std::back_inserter(a.paths.back()));
-    }
-    a.function_distances = solve_mixed<CGAL::Parallel_tag>(
-      m, vertex_sources, face_sources,
-      CGAL_ext::parameters::algorithm(CGAL_ext::FWP_MMP).number_of_threads(threads).batch_size(batch));
-    return a;
-  };
+    auto run = [&](int threads, std::size_t batch) {
+      Pmmp_answers a;
+      Parallel_paths p(m);
+      p.add_sources(vertex_sources);
+      p.add_sources(face_sources);
+      CGAL_ext::Geodesic_statistics stats;
+      p.build(number_of_threads(threads).batch_size(batch).statistics(stats).algorithm(algorithm));
+      a.windows = stats.windows_created;
+      a.deferred = stats.windows_deferred;
+      for(Vertex v : m.vertices()) {
+        a.vertex_distances.push_back(p.distance(v));
+        a.sources.push_back(p.nearest_source(v));
+      }
+      for(const Face_location& l : point_targets) {
+        a.point_distances.push_back(p.distance(l));
+        a.sources.push_back(p.nearest_source(l));
+        a.paths.emplace_back();
+        p.shortest_path_surface_points(l, std::back_inserter(a.paths.back()));
+      }
+      for(Vertex v : vertex_targets) {
+        a.paths.emplace_back();
+        p.shortest_path_surface_points(v, std::back_inserter(a.paths.back()));
+      }
+      a.function_distances = solve_mixed<CGAL::Parallel_tag>(
+        m, vertex_sources, face_sources,
+        CGAL_ext::parameters::algorithm(CGAL_ext::FWP_MMP).number_of_threads(threads).batch_size(batch));
+      return a;
+    };
 
-  std::size_t deferred = 0;
-  for(std::size_t batch : {std::size_t(1), std::size_t(64), std::size_t(1024)}) {
-    const Pmmp_answers one = run(1, batch);
-    deferred += one.deferred;
-    EXPECT_LE(max_difference(one.vertex_distances, vtp), tolerance) << "batch " << batch;
-    EXPECT_LE(max_difference(one.function_distances, vtp), tolerance) << "batch " << batch;
-    for(const auto& path : one.paths)
-      EXPECT_TRUE(is_valid_path(m, path)) << "batch " << batch;
-    for(int threads : {2, 4}) {
-      const Pmmp_answers many = run(threads, batch);
-      const std::string where = "batch " + std::to_string(batch) + ", " + std::to_string(threads) + " threads";
-      EXPECT_EQ(max_difference(many.vertex_distances, one.vertex_distances), 0.) << where;
-      EXPECT_EQ(max_difference(many.function_distances, one.function_distances), 0.) << where;
-      EXPECT_EQ(max_difference(many.point_distances, one.point_distances), 0.) << where;
-      EXPECT_EQ(many.sources, one.sources) << where;
-      EXPECT_EQ(many.windows, one.windows) << where;
-      EXPECT_EQ(many.deferred, one.deferred) << where;
-      ASSERT_EQ(many.paths.size(), one.paths.size());
-      for(std::size_t i = 0; i < one.paths.size(); ++i)
-        EXPECT_TRUE(identical_paths(many.paths[i], one.paths[i])) << where << ", path " << i;
+    std::size_t deferred = 0;
+    for(std::size_t batch : {std::size_t(1), std::size_t(64), std::size_t(1024)}) {
+      const Pmmp_answers one = run(1, batch);
+      deferred += one.deferred;
+      EXPECT_LE(max_difference(one.vertex_distances, vtp), tolerance) << "batch " << batch;
+      EXPECT_LE(max_difference(one.function_distances, vtp), tolerance) << "batch " << batch;
+      for(const auto& path : one.paths)
+        EXPECT_TRUE(is_valid_path(m, path)) << "batch " << batch;
+      for(int threads : {2, 4}) {
+        const Pmmp_answers many = run(threads, batch);
+        const std::string where = "batch " + std::to_string(batch) + ", " + std::to_string(threads) + " threads";
+        EXPECT_EQ(max_difference(many.vertex_distances, one.vertex_distances), 0.) << where;
+        EXPECT_EQ(max_difference(many.function_distances, one.function_distances), 0.) << where;
+        EXPECT_EQ(max_difference(many.point_distances, one.point_distances), 0.) << where;
+        EXPECT_EQ(many.sources, one.sources) << where;
+        EXPECT_EQ(many.windows, one.windows) << where;
+        EXPECT_EQ(many.deferred, one.deferred) << where;
+        ASSERT_EQ(many.paths.size(), one.paths.size());
+        for(std::size_t i = 0; i < one.paths.size(); ++i)
+          EXPECT_TRUE(identical_paths(many.paths[i], one.paths[i])) << where << ", path " << i;
+      }
     }
+    // PMMP: windows whose distance moved to a later bucket while they waited were taken out of
+    // order and queued again: the runs above went through that path
+    if(algorithm == CGAL_ext::FWP_MMP)
+      EXPECT_GT(deferred, 0u);
   }
-  // windows whose distance moved to a later bucket while they waited were taken out of order
-  // and queued again: the runs above went through that path
-  EXPECT_GT(deferred, 0u);
 }
 
 } // namespace
@@ -633,22 +637,27 @@ TEST(Geodesic_voronoi_parallel, the_same_diagram_for_every_thread_count)
 {
   const Mesh& m = test_mesh("elephant");
   const std::vector<Vertex> sources = spread_vertices(m, 6, 11);
-  const auto one = CGAL_ext::geodesic_voronoi_diagram<CGAL::Parallel_tag>(m, sources, number_of_threads(1));
-  ASSERT_FALSE(one.bisectors.empty());
-  for(int threads : {2, 4}) {
-    const auto many = CGAL_ext::geodesic_voronoi_diagram<CGAL::Parallel_tag>(m, sources, number_of_threads(threads));
-    EXPECT_EQ(many.vertex_cell, one.vertex_cell) << threads << " threads";
-    EXPECT_EQ(many.dual_edges, one.dual_edges) << threads << " threads";
-    EXPECT_EQ(many.dual_triangles, one.dual_triangles) << threads << " threads";
-    ASSERT_EQ(many.bisectors.size(), one.bisectors.size()) << threads << " threads";
-    for(std::size_t i = 0; i < one.bisectors.size(); ++i) {
-      ASSERT_EQ(many.bisectors[i].points.size(), one.bisectors[i].points.size()) << threads << " threads";
-      for(std::size_t k = 0; k < one.bisectors[i].points.size(); ++k)
-        EXPECT_EQ(many.bisectors[i].points[k].point, one.bisectors[i].points[k].point);
+  for(CGAL_ext::Geodesic_algorithm algorithm : {CGAL_ext::FWP_MMP, CGAL_ext::VTP}) {
+    SCOPED_TRACE(algorithm == CGAL_ext::VTP ? "PVTP's windows" : "PMMP");
+    const auto one =
+      CGAL_ext::geodesic_voronoi_diagram<CGAL::Parallel_tag>(m, sources, number_of_threads(1).algorithm(algorithm));
+    ASSERT_FALSE(one.bisectors.empty());
+    for(int threads : {2, 4}) {
+      const auto many = CGAL_ext::geodesic_voronoi_diagram<CGAL::Parallel_tag>(
+        m, sources, number_of_threads(threads).algorithm(algorithm));
+      EXPECT_EQ(many.vertex_cell, one.vertex_cell) << threads << " threads";
+      EXPECT_EQ(many.dual_edges, one.dual_edges) << threads << " threads";
+      EXPECT_EQ(many.dual_triangles, one.dual_triangles) << threads << " threads";
+      ASSERT_EQ(many.bisectors.size(), one.bisectors.size()) << threads << " threads";
+      for(std::size_t i = 0; i < one.bisectors.size(); ++i) {
+        ASSERT_EQ(many.bisectors[i].points.size(), one.bisectors[i].points.size()) << threads << " threads";
+        for(std::size_t k = 0; k < one.bisectors[i].points.size(); ++k)
+          EXPECT_EQ(many.bisectors[i].points[k].point, one.bisectors[i].points[k].point);
+      }
+      ASSERT_EQ(many.vertices.size(), one.vertices.size());
+      for(std::size_t i = 0; i < one.vertices.size(); ++i)
+        EXPECT_EQ(many.vertices[i].point.point, one.vertices[i].point.point);
     }
-    ASSERT_EQ(many.vertices.size(), one.vertices.size());
-    for(std::size_t i = 0; i < one.vertices.size(); ++i)
-      EXPECT_EQ(many.vertices[i].point.point, one.vertices[i].point.point);
   }
 }
 

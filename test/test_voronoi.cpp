@@ -1,7 +1,8 @@
-// The exact geodesic Voronoi diagram: bisector points equidistant from their two sources (by
-// single-source MMP queries at those surface points) with no third source nearer, Voronoi
-// vertices equidistant from three, the dual graph; the analytic answer on a flat square; a cell
-// that holds no vertex of the mesh.
+// The exact geodesic Voronoi diagram, read from FWP-MMP's windows and from VTP's: bisector
+// points equidistant from their two sources (by single-source MMP queries at those surface
+// points) with no third source nearer, Voronoi vertices equidistant from three, every vertex in
+// its nearest cell, the dual graph; the analytic answer on a flat square; a cell that holds no
+// vertex of the mesh.
 #include "support/analytic_surfaces.h"
 #include "support/checks.h"
 #include "support/mesh_transformations.h"
@@ -217,23 +218,23 @@ TEST(Geodesic_voronoi, a_flat_square_has_straight_bisectors_and_the_circumcentre
   ASSERT_EQ(sources.size(), 3u);
   for(std::size_t count : {2, 3})
     for(CGAL_ext::Geodesic_algorithm algorithm : diagram_algorithms) {
-    const std::vector<Face_location> some(sources.begin(), sources.begin() + std::ptrdiff_t(count));
-    const auto d = diagram_of(m, some, algorithm);
-    expect_exact_diagram(m, some, d, std::to_string(count) + " sources" + name_of(algorithm));
-    for(const auto& b : d.bisectors)
-      for(const auto& p : b.points)
-        EXPECT_NEAR(std::sqrt(CGAL::squared_distance(p.point, site[b.first_source])),
-                    std::sqrt(CGAL::squared_distance(p.point, site[b.second_source])), 1e-12);
-    if(count == 2) {
-      EXPECT_TRUE(d.vertices.empty());
-      EXPECT_EQ(d.bisectors.size(), 1u) << "one straight bisector across the square";
-    } else {
-      ASSERT_EQ(d.vertices.size(), 1u);
-      const Point centre = CGAL::circumcenter(site[0], site[1], site[2]);
-      EXPECT_LE(std::sqrt(CGAL::squared_distance(d.vertices[0].point.point, centre)), 1e-9);
-      EXPECT_EQ(d.bisectors.size(), 3u) << "three bisectors from the circumcentre";
+      const std::vector<Face_location> some(sources.begin(), sources.begin() + std::ptrdiff_t(count));
+      const auto d = diagram_of(m, some, algorithm);
+      expect_exact_diagram(m, some, d, std::to_string(count) + " sources" + name_of(algorithm));
+      for(const auto& b : d.bisectors)
+        for(const auto& p : b.points)
+          EXPECT_NEAR(std::sqrt(CGAL::squared_distance(p.point, site[b.first_source])),
+                      std::sqrt(CGAL::squared_distance(p.point, site[b.second_source])), 1e-12);
+      if(count == 2) {
+        EXPECT_TRUE(d.vertices.empty());
+        EXPECT_EQ(d.bisectors.size(), 1u) << "one straight bisector across the square";
+      } else {
+        ASSERT_EQ(d.vertices.size(), 1u);
+        const Point centre = CGAL::circumcenter(site[0], site[1], site[2]);
+        EXPECT_LE(std::sqrt(CGAL::squared_distance(d.vertices[0].point.point, centre)), 1e-9);
+        EXPECT_EQ(d.bisectors.size(), 3u) << "three bisectors from the circumcentre";
+      }
     }
-  }
 }
 
 // Four sources at the corners of a square on a flat grid: the four cells meet at its centre, one
@@ -245,20 +246,20 @@ TEST(Geodesic_voronoi, four_cells_meet_at_the_centre_of_a_square)
   const Mesh m = make_grid(9, 0.125);
   for(const Point& centre : {Point(0.53, 0.47, 0), Point(0.51, 0.46, 0), Point(0.455, 0.535, 0)})
     for(CGAL_ext::Geodesic_algorithm algorithm : diagram_algorithms) {
-    SCOPED_TRACE(centre);
-    SCOPED_TRACE(name_of(algorithm));
-    std::vector<Face_location> sources;
-    for(const auto& [dx, dy] : {std::make_pair(-0.2, -0.2), std::make_pair(0.2, -0.2), std::make_pair(0.2, 0.2),
-                                std::make_pair(-0.2, 0.2)})
-      sources.push_back(planar_location(m, Point(centre.x() + dx, centre.y() + dy, 0)));
-    const auto d = diagram_of(m, sources, algorithm);
-    expect_exact_diagram(m, sources, d, "four symmetric sources");
-    ASSERT_EQ(d.vertices.size(), 1u);
-    EXPECT_EQ(d.vertices[0].sources, (std::vector<std::size_t>{0, 1, 2, 3}));
-    EXPECT_LE(std::sqrt(CGAL::squared_distance(d.vertices[0].point.point, centre)), 1e-9);
-    EXPECT_EQ(d.bisectors.size(), 4u);
-    EXPECT_EQ(d.dual_triangles.size(), 4u) << "every three of the four";
-  }
+      SCOPED_TRACE(centre);
+      SCOPED_TRACE(name_of(algorithm));
+      std::vector<Face_location> sources;
+      for(const auto& [dx, dy] : {std::make_pair(-0.2, -0.2), std::make_pair(0.2, -0.2), std::make_pair(0.2, 0.2),
+                                  std::make_pair(-0.2, 0.2)})
+        sources.push_back(planar_location(m, Point(centre.x() + dx, centre.y() + dy, 0)));
+      const auto d = diagram_of(m, sources, algorithm);
+      expect_exact_diagram(m, sources, d, "four symmetric sources");
+      ASSERT_EQ(d.vertices.size(), 1u);
+      EXPECT_EQ(d.vertices[0].sources, (std::vector<std::size_t>{0, 1, 2, 3}));
+      EXPECT_LE(std::sqrt(CGAL::squared_distance(d.vertices[0].point.point, centre)), 1e-9);
+      EXPECT_EQ(d.bisectors.size(), 4u);
+      EXPECT_EQ(d.dual_triangles.size(), 4u) << "every three of the four";
+    }
 }
 
 // The step behind the test above, on its own: a bisector of cells a and b that ends at a vertex of
@@ -303,17 +304,17 @@ TEST(Geodesic_voronoi, a_cell_without_any_vertex_is_found)
                                            {f, Barycentric{{0.3, 0.4, 0.3}}},
                                            {f, Barycentric{{0.3, 0.3, 0.4}}}};
   for(CGAL_ext::Geodesic_algorithm algorithm : diagram_algorithms) {
-  SCOPED_TRACE(name_of(algorithm));
-  const auto d = diagram_of(m, sources, algorithm);
-  expect_exact_diagram(m, sources, d, "a cell inside a face");
-  EXPECT_EQ(std::count(d.vertex_cell.begin(), d.vertex_cell.end(), std::size_t(1)), 0) << "a cell without vertices";
-  for(std::size_t other : {2, 3, 4})
-    EXPECT_TRUE(std::count(d.dual_edges.begin(), d.dual_edges.end(), std::make_pair(std::size_t(1), other)))
-      << "cells 1 and " << other << " share a bisector";
-  std::size_t around = 0;
-  for(const auto& v : d.vertices)
-    around += std::count(v.sources.begin(), v.sources.end(), std::size_t(1));
-  EXPECT_EQ(around, 3u) << "three Voronoi vertices around the small cell";
+    SCOPED_TRACE(name_of(algorithm));
+    const auto d = diagram_of(m, sources, algorithm);
+    expect_exact_diagram(m, sources, d, "a cell inside a face");
+    EXPECT_EQ(std::count(d.vertex_cell.begin(), d.vertex_cell.end(), std::size_t(1)), 0) << "a cell without vertices";
+    for(std::size_t other : {2, 3, 4})
+      EXPECT_TRUE(std::count(d.dual_edges.begin(), d.dual_edges.end(), std::make_pair(std::size_t(1), other)))
+        << "cells 1 and " << other << " share a bisector";
+    std::size_t around = 0;
+    for(const auto& v : d.vertices)
+      around += std::count(v.sources.begin(), v.sources.end(), std::size_t(1));
+    EXPECT_EQ(around, 3u) << "three Voronoi vertices around the small cell";
   }
 }
 

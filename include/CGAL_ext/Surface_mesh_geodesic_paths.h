@@ -11,7 +11,6 @@
 #include <CGAL_ext/Geodesics_3/Named_function_parameters.h>
 #include <CGAL_ext/Geodesics_3/internal/Geodesic_path_tracer.h>
 #include <CGAL_ext/Geodesics_3/internal/Geodesic_setup.h>
-#include <CGAL_ext/Geodesics_3/internal/MMP_solver.h>
 #include <CGAL_ext/Geodesics_3/internal/Recorded_windows.h>
 
 #include <CGAL/Kernel_traits.h>
@@ -243,25 +242,23 @@ public:
       throw Geodesic_error("Surface_mesh_geodesic_paths builds exact windows: it takes no approximation");
     if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::stop_vertices_t>::value)
       throw Geodesic_error("Surface_mesh_geodesic_paths builds every window: it takes no stop_vertices");
+    auto windows = std::make_unique<internal::Exact_window_build>(m_mesh.cache(), settings, parallel);
+    for(const auto& s : m_sources)
+      windows->solver().add_source(s);
     // The parameters are valid: the previous result goes now, so that two sets of windows are
     // never held at once.
     forget_build();
-    if(settings.algorithm == VTP) {
-      m_vtp = std::make_unique<internal::VTP_with_windows>(m_mesh.cache(), settings, parallel);
-      run(m_vtp->solver(), settings);
-      m_tracer = std::make_unique<internal::Geodesic_path_tracer>(
-        m_vtp->windows(), built().distances(), built().nearest_sources(), built().sources(), built().max_distance());
-    } else {
-      m_mmp = std::make_unique<internal::MMP_solver>(m_mesh.cache(), settings, parallel);
-      run(*m_mmp, settings);
-      m_tracer = std::make_unique<internal::Geodesic_path_tracer>(
-        m_mmp->windows(), built().distances(), built().nearest_sources(), built().sources(), built().max_distance());
-    }
-    m_statistics = internal::report_statistics(settings, built().statistics(), m_mesh.seconds());
+    windows->template run<parallel>(settings.number_of_threads);
+    const internal::Solver_base& solver = windows->solver();
+    m_tracer = std::make_unique<internal::Geodesic_path_tracer>(windows->windows(), solver.distances(),
+                                                                solver.nearest_sources(), solver.sources(),
+                                                                solver.max_distance());
+    m_build = std::move(windows);
+    m_statistics = internal::report_statistics(settings, solver.statistics(), m_mesh.seconds());
   }
 
   /// \return whether `build()` ran since the sources last changed
-  bool is_built() const { return m_mmp || m_vtp; }
+  bool is_built() const { return m_build != nullptr; }
 
   /// \name Queries
   /// Each throws `Geodesic_error` when `build()` has not run since the sources last changed, or
@@ -369,27 +366,15 @@ private:
 
   void forget_build()
   {
-    m_tracer.reset(); // it refers to the solver
-    m_mmp.reset();
-    m_vtp.reset();
-  }
-
-  template <class Solver>
-  void run(Solver& solver, const Geodesics_3::internal::Solver_settings& settings)
-  {
-    constexpr bool parallel = std::is_same<ConcurrencyTag, CGAL::Parallel_tag>::value;
-    for(const auto& s : m_sources)
-      solver.add_source(s);
-    Geodesics_3::internal::run_solver<parallel>(solver, settings.number_of_threads);
+    m_tracer.reset(); // it refers to the build
+    m_build.reset();
   }
 
   const Geodesics_3::internal::Solver_base& built() const
   {
-    if(m_vtp)
-      return m_vtp->solver();
-    if(!m_mmp)
+    if(!m_build)
       throw Geodesic_error("build() must be called after the sources are added and before any query");
-    return *m_mmp;
+    return m_build->solver();
   }
   const Geodesics_3::internal::Geodesic_path_tracer& tracer() const
   {
@@ -456,9 +441,7 @@ private:
   // move of this object.
   Mesh_setup m_mesh;
   std::vector<Geodesics_3::internal::Source_point> m_sources;
-  // the windows of the last build: MMP's, or VTP's (one of the two)
-  std::unique_ptr<Geodesics_3::internal::MMP_solver> m_mmp;
-  std::unique_ptr<Geodesics_3::internal::VTP_with_windows> m_vtp;
+  std::unique_ptr<Geodesics_3::internal::Exact_window_build> m_build; // the windows of the last build
   std::unique_ptr<Geodesics_3::internal::Geodesic_path_tracer> m_tracer;
   Geodesic_statistics m_statistics;
 };

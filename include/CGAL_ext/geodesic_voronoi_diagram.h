@@ -13,7 +13,6 @@
 #include <CGAL_ext/Geodesics_3/internal/Geodesic_path_tracer.h>
 #include <CGAL_ext/Geodesics_3/internal/Geodesic_setup.h>
 #include <CGAL_ext/Geodesics_3/internal/Geodesic_voronoi.h>
-#include <CGAL_ext/Geodesics_3/internal/MMP_solver.h>
 #include <CGAL_ext/Geodesics_3/internal/Recorded_windows.h>
 
 #include <CGAL/tags.h>
@@ -21,7 +20,6 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
-#include <optional>
 #include <set>
 #include <utility>
 #include <vector>
@@ -130,22 +128,13 @@ geodesic_voronoi_diagram(const TriangleMesh& tm, const Sources& sources,
     throw Geodesic_error("a Voronoi diagram is exact: it takes no approximation");
   const internal::Mesh_setup<TriangleMesh, Vertex_point_map> mesh(tm, np);
   const internal::Mesh_cache& cache = mesh.cache();
-  // The windows the diagram is read from: those MMP keeps on the edges, or VTP's as it
-  // propagated them
-  std::optional<internal::MMP_solver> mmp;
-  std::optional<internal::VTP_with_windows> vtp;
-  if(settings.algorithm == VTP)
-    vtp.emplace(cache, settings, parallel);
-  else
-    mmp.emplace(cache, settings, parallel);
-  internal::Solver_base& solver = vtp ? static_cast<internal::Solver_base&>(vtp->solver()) : *mmp;
-  const internal::Edge_window_store& windows = vtp ? vtp->windows() : mmp->windows();
+  // the windows the diagram is read from: those MMP keeps on the edges, or VTP's as it propagated them
+  internal::Exact_window_build build(cache, settings, parallel);
+  internal::Solver_base& solver = build.solver();
+  const internal::Edge_window_store& windows = build.windows();
   for(const internal::Source_point& s : mesh.source_points(sources))
     solver.add_source(s);
-  if(vtp)
-    internal::run_solver<parallel>(vtp->solver(), settings.number_of_threads);
-  else
-    internal::run_solver<parallel>(*mmp, settings.number_of_threads);
+  build.run<parallel>(settings.number_of_threads);
   const internal::Geodesic_path_tracer tracer(windows, solver.distances(), solver.nearest_sources(), solver.sources(),
                                               solver.max_distance());
   internal::Voronoi_builder builder(cache, windows, tracer);

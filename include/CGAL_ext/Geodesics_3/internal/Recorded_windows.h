@@ -3,14 +3,18 @@
 #define CGAL_EXT_GEODESICS_3_INTERNAL_RECORDED_WINDOWS_H
 
 // A VTP (PVTP) run whose windows are kept on the edges as MMP keeps its own, so that the path
-// tracer (distances anywhere, shortest paths) and the Voronoi diagram can read them.
+// tracer (distances anywhere, shortest paths) and the Voronoi diagram can read them; and the one
+// exact build either reads, MMP's or VTP's.
 
 #include <CGAL_ext/Geodesics_3/Tolerances.h>
 #include <CGAL_ext/Geodesics_3/internal/Edge_window_store.h>
+#include <CGAL_ext/Geodesics_3/internal/Geodesic_setup.h>
+#include <CGAL_ext/Geodesics_3/internal/MMP_solver.h>
 #include <CGAL_ext/Geodesics_3/internal/Mesh_cache.h>
 #include <CGAL_ext/Geodesics_3/internal/Solver_settings.h>
 #include <CGAL_ext/Geodesics_3/internal/VTP_solver.h>
 
+#include <memory>
 #include <vector>
 
 namespace CGAL_ext {
@@ -49,6 +53,38 @@ private:
   VTP_solver m_solver;
   Edge_window_store m_windows;
   Insertion_output m_insertion;
+};
+
+/// One exact build whose windows are read anywhere on the surface: MMP's (FWP-MMP, MMP, PMMP),
+/// or VTP's (PVTP) when `settings.algorithm` is VTP.
+class Exact_window_build
+{
+public:
+  Exact_window_build(const Mesh_cache& mesh, const Solver_settings& settings, bool parallel)
+  {
+    if(settings.algorithm == VTP)
+      m_vtp = std::make_unique<VTP_with_windows>(mesh, settings, parallel);
+    else
+      m_mmp = std::make_unique<MMP_solver>(mesh, settings, parallel);
+  }
+
+  Solver_base& solver() { return m_vtp ? static_cast<Solver_base&>(m_vtp->solver()) : *m_mmp; }
+  const Solver_base& solver() const { return m_vtp ? static_cast<const Solver_base&>(m_vtp->solver()) : *m_mmp; }
+  const Edge_window_store& windows() const { return m_vtp ? m_vtp->windows() : m_mmp->windows(); }
+
+  /// Runs the solver in a task arena of `threads` (see `run_solver`).
+  template <bool parallel>
+  void run(int threads)
+  {
+    if(m_vtp)
+      run_solver<parallel>(m_vtp->solver(), threads);
+    else
+      run_solver<parallel>(*m_mmp, threads);
+  }
+
+private:
+  std::unique_ptr<MMP_solver> m_mmp;
+  std::unique_ptr<VTP_with_windows> m_vtp; // one of the two
 };
 
 } // namespace internal
