@@ -32,8 +32,11 @@ namespace CGAL_ext {
 /// `build()` propagates windows (bundles of straight paths unfolded across faces) and keeps
 /// them on the edges: with `CGAL_ext::MMP` in exact order of distance (Mitchell, Mount and
 /// Papadimitriou), with `CGAL_ext::FWP_MMP` (the default) bucket by bucket, and with
-/// `CGAL::Parallel_tag` as PMMP on TBB threads (thesis chapter 3). All three give the same
-/// distances up to round-off; PMMP gives the same for every number of threads.
+/// `CGAL::Parallel_tag` as PMMP on TBB threads (thesis chapter 3). With `CGAL_ext::VTP` it keeps
+/// instead the windows that VTP (PVTP with `CGAL::Parallel_tag`) propagates across each face,
+/// clipped against each other as MMP clips its own: faster where MMP's store and queue dominate
+/// (many sources, meshes of many saddle vertices). All give the same distances up to round-off;
+/// PMMP and PVTP give the same for every number of threads.
 ///
 /// After `build()` every query is `const` and may run on any number of threads at once.
 /// A point is a vertex or a face location: a face and barycentric coordinates in the order of the
@@ -48,8 +51,8 @@ namespace CGAL_ext {
 ///
 /// \tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph` (for example
 ///         `CGAL::Surface_mesh`), manifold, made of triangles
-/// \tparam ConcurrencyTag `CGAL::Sequential_tag` (the default), `CGAL::Parallel_tag` (PMMP,
-///         needs TBB) or `CGAL::Parallel_if_available_tag`
+/// \tparam ConcurrencyTag `CGAL::Sequential_tag` (the default), `CGAL::Parallel_tag` (PMMP or
+///         PVTP, needs TBB) or `CGAL::Parallel_if_available_tag`
 /// \tparam VertexPointMap the vertex point map; its value type is the point type of paths
 template <class TriangleMesh, class ConcurrencyTag = CGAL::Sequential_tag,
           class VertexPointMap = typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>
