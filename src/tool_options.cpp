@@ -19,7 +19,7 @@ namespace geodesic_tool {
 
 namespace {
 
-/// The names of the algorithms that satisfy `wanted` (and keep windows, for paths), as
+/// The names of the algorithms that satisfy `wanted` (and are exact, with `exact_only`), as
 /// "a, b and c" (`conjunction` "and" or "or").
 template <class Predicate>
 std::string algorithm_names(Predicate wanted, bool exact_only, const char* conjunction)

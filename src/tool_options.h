@@ -96,7 +96,8 @@ inline const Algorithm algorithms[] = {
   {"fwp-mmp", false, false, CGAL_ext::FWP_MMP}, {"mmp", false, false, CGAL_ext::MMP},
   {"pmmp", true, false, CGAL_ext::FWP_MMP}};
 
-/// Whether the solver keeps its windows on the edges (the MMP family), which paths need.
+/// Whether the solver is of the MMP family, which keeps every window on the edges: its batch is
+/// of windows (not of lists) and it reports its store and queue in the statistics.
 inline bool keeps_windows(const Algorithm& a) { return a.library != CGAL_ext::VTP; }
 
 constexpr double default_lambda = 8;

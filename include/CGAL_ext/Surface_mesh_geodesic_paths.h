@@ -240,11 +240,8 @@ public:
     // (CGAL::Parallel_if_available_tag is CGAL::Parallel_tag when TBB is linked)
     constexpr bool parallel = std::is_same<ConcurrencyTag, CGAL::Parallel_tag>::value;
     internal::check_has_sources(m_mesh.cache(), m_sources);
-    const internal::Solver_settings settings = internal::read_solver_settings(np, FWP_MMP);
-    if(settings.approximation > 0)
-      throw Geodesic_error("Surface_mesh_geodesic_paths builds exact windows: it takes no approximation");
-    if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::stop_vertices_t>::value)
-      throw Geodesic_error("Surface_mesh_geodesic_paths builds every window: it takes no stop_vertices");
+    const internal::Solver_settings settings =
+      internal::read_window_build_settings(np, "Surface_mesh_geodesic_paths::build()");
     auto windows = std::make_unique<internal::Exact_window_build>(m_mesh.cache(), settings, parallel);
     for(const auto& s : m_sources)
       windows->solver().add_source(s);

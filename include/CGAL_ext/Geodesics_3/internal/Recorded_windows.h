@@ -6,6 +6,7 @@
 // tracer (distances anywhere, shortest paths) and the Voronoi diagram can read them; and the one
 // exact build either reads, MMP's or VTP's.
 
+#include <CGAL_ext/Geodesics_3/Geodesic_error.h>
 #include <CGAL_ext/Geodesics_3/Tolerances.h>
 #include <CGAL_ext/Geodesics_3/internal/Edge_window_store.h>
 #include <CGAL_ext/Geodesics_3/internal/Geodesic_setup.h>
@@ -15,6 +16,7 @@
 #include <CGAL_ext/Geodesics_3/internal/VTP_solver.h>
 
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace CGAL_ext {
@@ -54,6 +56,19 @@ private:
   Edge_window_store m_windows;
   Insertion_output m_insertion;
 };
+
+/// The settings of a build whose windows are read anywhere on the surface (`what` names it in the
+/// messages): exact, whole, FWP-MMP by default.
+template <class NamedParameters>
+Solver_settings read_window_build_settings(const NamedParameters& np, const char* what)
+{
+  if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::stop_vertices_t>::value)
+    throw Geodesic_error(std::string(what) + " takes no stop_vertices: its windows are read anywhere");
+  const Solver_settings settings = read_solver_settings(np, FWP_MMP);
+  if(settings.approximation > 0)
+    throw Geodesic_error(std::string(what) + " is exact: it takes no approximation");
+  return settings;
+}
 
 /// One exact build whose windows are read anywhere on the surface: MMP's (FWP-MMP, MMP, PMMP),
 /// or VTP's (PVTP) when `settings.algorithm` is VTP.
