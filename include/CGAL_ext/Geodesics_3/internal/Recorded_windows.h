@@ -24,25 +24,21 @@ namespace Geodesics_3 {
 namespace internal {
 
 /// VTP with every list's windows, as they cross their face, clipped into an `Edge_window_store`
-/// (in merge order, the same for every number of threads). VTP drops a path only where another
-/// one is at least as short (a vertex's distance and the segment from it, another window of the
-/// list, or the kinked path through Rule 1's split point, never a shortest one), so the
-/// shortest path to any point of a face enters it through one of its edges in a stored window
-/// or passes through one of its corners: the tracer reads them as it reads MMP's.
+/// (per edge in merge order, the same for every number of threads; PVTP records each round's
+/// lists on its threads, edge by edge, as PMMP inserts its own windows). VTP drops a path only
+/// where another one is at least as short (a vertex's distance and the segment from it, another
+/// window of the list, or the kinked path through Rule 1's split point, never a shortest one),
+/// so the shortest path to any point of a face enters it through one of its edges in a stored
+/// window or passes through one of its corners: the tracer reads them as it reads MMP's.
 /// Not copyable: the solver hands its windows to this object.
-class VTP_with_windows
+class VTP_with_windows : private Propagated_window_recorder
 {
 public:
   VTP_with_windows(const Mesh_cache& mesh, const Solver_settings& settings, bool parallel)
     : m_solver(mesh, settings, parallel)
     , m_windows(mesh, min_window_length_ratio * mesh.mean_edge_length, /*requeue_trimmed=*/false)
   {
-    m_solver.record_propagated_windows([this](int h, const std::vector<Window>& list) {
-      for(const Window& w : list)
-        m_windows.insert(w, h, w.source, 0, m_insertion);
-      m_insertion.queued.clear(); // nothing is queued: the store is only read
-      m_insertion.updates.clear();
-    });
+    m_solver.record_propagated_windows(this);
   }
   VTP_with_windows(const VTP_with_windows&) = delete;
   VTP_with_windows& operator=(const VTP_with_windows&) = delete;
@@ -52,9 +48,24 @@ public:
   const Edge_window_store& windows() const { return m_windows; }
 
 private:
+  void start_run(bool parallel) override
+  {
+    m_windows.use_one_slot_per_thread(parallel);
+    m_insertion.resize(m_windows.number_of_slots());
+  }
+
+  void record(int h, const std::vector<Window>& list, std::size_t slot) override
+  {
+    Insertion_output& out = m_insertion[slot];
+    for(const Window& w : list)
+      m_windows.insert(w, h, w.source, slot, out);
+    out.queued.clear(); // nothing is queued: the store is only read
+    out.updates.clear();
+  }
+
   VTP_solver m_solver;
   Edge_window_store m_windows;
-  Insertion_output m_insertion;
+  std::vector<Insertion_output> m_insertion; // per slot of the store's pool
 };
 
 /// The settings of a build whose windows are read anywhere on the surface (`what` names it in the

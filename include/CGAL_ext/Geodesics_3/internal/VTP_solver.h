@@ -16,7 +16,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
-#include <functional>
 #include <utility>
 #include <vector>
 
@@ -73,6 +72,21 @@ struct List_task
   // read the mesh's opposites
   int to_ac_halfedge = -1, to_cb_halfedge = -1;
   std::vector<Window> propagated; // the list's windows as propagated, when they are recorded
+};
+
+/// What receives the windows of each list as VTP propagates it
+/// (`VTP_solver::record_propagated_windows`).
+class Propagated_window_recorder
+{
+public:
+  virtual ~Propagated_window_recorder() = default;
+  /// Called by each run, in the task arena it runs in, before it records any window; `parallel`
+  /// is the solver's (per-thread storage then needs a slot per thread of the arena).
+  virtual void start_run(bool parallel) = 0;
+  /// The windows of the list of half-edge h as they cross its face, from the thread of `slot`.
+  /// The lists of one edge (h and its opposite) come from one thread at a time, in the order of
+  /// the merges; lists of different edges may come at once from different threads.
+  virtual void record(int h, const std::vector<Window>& windows, std::size_t slot) = 0;
 };
 
 /// What a pseudo-source (a vertex, or a face point) emits, computed before it is applied: the
@@ -151,14 +165,19 @@ public:
   }
 
   /// Hands every list's windows as they are propagated across its face (trimmed by the edge's
-  /// vertices and clipped against each other, before the children are made) to
-  /// `record(h, windows)`, h the list's half-edge, in the order of the merges (the same for
-  /// every number of threads). No path is dropped unless another is at least as short, so these
-  /// windows and the paths through a vertex give the distance at any point of any face they
-  /// enter (`geodesic_voronoi_diagram` reads them). Empty: none (the default).
-  void record_propagated_windows(std::function<void(int, const std::vector<Window>&)> record)
+  /// vertices and clipped against each other, before the children are made) to `recorder`
+  /// (null: none, the default), per edge in the order of the merges (the same for every number
+  /// of threads); in parallel, each round's lists are recorded on the threads, edge by edge.
+  /// No path is dropped unless another is at least as short, so these windows and the paths
+  /// through a vertex give the distance at any point of any face they enter
+  /// (`geodesic_voronoi_diagram` reads them). The recorder must outlive the runs.
+  void record_propagated_windows(Propagated_window_recorder* recorder)
   {
-    m_record = std::move(record);
+    m_recorder = recorder;
+    if(recorder)
+      m_round_task.assign(m_mesh.number_of_halfedges(), -1);
+    else
+      m_round_task = std::vector<int>();
   }
 
   /// Makes the solver ready for another run on the same mesh with the same settings, without
@@ -254,6 +273,8 @@ public:
     check_has_sources(m_mesh, m_sources);
     m_main_slot = m_pool.use_one_slot_per_thread(m_parallel);
     m_list_buffers.resize(m_pool.number_of_slots());
+    if(m_recorder)
+      m_recorder->start_run(m_parallel);
     for(const Source_point& s : m_sources) {
       const int index = m_first_source_index + int(&s - m_sources.data());
       if(s.vertex >= 0) {
@@ -653,11 +674,16 @@ private:
       const std::size_t n = m_scheduled_lists.size();
       if(m_tasks.size() < n)
         m_tasks.resize(n);
-      for(std::size_t i = 0; i < n; ++i)
+      for(std::size_t i = 0; i < n; ++i) {
         detach(m_scheduled_lists[i], m_tasks[i]);
+        if(m_recorder)
+          m_round_task[std::size_t(m_scheduled_lists[i])] = int(i);
+      }
       m_scheduled_lists.clear();
       auto start = Clock::now();
       propagate_tasks(n);
+      if(m_recorder)
+        record_round(n);
       m_statistics.seconds_propagation += seconds_since(start);
       start = Clock::now();
       for(std::size_t i = 0; i < n; ++i) {
@@ -675,6 +701,33 @@ private:
     // Each task reads shared state that no task writes, and writes only itself and its
     // thread's pool slot.
     for_each_index(m_parallel, n, list_grain, [this](std::size_t i, std::size_t slot) { propagate(m_tasks[i], slot); });
+  }
+
+  // The round's propagated lists to the recorder, in parallel by edge: the task of the lower
+  // index records its list, then the list on the other side of its edge when it is in the round
+  // too (the merges' order on each edge); the other task records nothing.
+  void record_round(std::size_t n)
+  {
+    for_each_index(m_parallel, n, list_grain, [this](std::size_t i, std::size_t slot) {
+      List_task& task = m_tasks[i];
+      const int opposite = m_mesh.opposite(task.halfedge);
+      const int other = opposite >= 0 ? m_round_task[std::size_t(opposite)] : -1;
+      if(other >= 0 && std::size_t(other) < i)
+        return;
+      record_task(task, slot);
+      if(other >= 0)
+        record_task(m_tasks[std::size_t(other)], slot);
+    });
+    for(std::size_t i = 0; i < n; ++i)
+      m_round_task[std::size_t(m_tasks[i].halfedge)] = -1;
+  }
+
+  void record_task(List_task& task, std::size_t slot)
+  {
+    if(!task.propagated.empty()) {
+      m_recorder->record(task.halfedge, task.propagated, slot);
+      task.propagated.clear();
+    }
   }
 
   // Propagates every list that still holds windows, whether or not its edge was swept; used
@@ -738,7 +791,7 @@ private:
       return;
     sort_by_start(buffers);
     prune_pairs(windows, m_min_clipped_overlap);
-    if(m_record)
+    if(m_recorder)
       keep_for_record(task, windows);
 
     // "One angle, two sides": the window with the shortest path to the apex splits the edge.
@@ -786,10 +839,8 @@ private:
   {
     ++m_statistics.lists_propagated;
     const int h = task.halfedge;
-    if(m_record && !task.propagated.empty()) {
-      m_record(h, task.propagated);
-      task.propagated.clear();
-    }
+    if(m_recorder && !m_batched)
+      record_task(task, m_main_slot);
     if(task.apex_distance < infinity())
       relax(m_mesh.apex(h), task.apex_distance, task.apex_source, task.apex_arrival);
     if(task.to_ac.size)
@@ -945,7 +996,8 @@ private:
   double m_next_reset = 0;
   bool m_flushing = false; // lists are scheduled whether or not they are in the swept region
   const bool m_batched;    // take vertices from buckets, propagate lists in batches
-  std::function<void(int, const std::vector<Window>&)> m_record; // see record_propagated_windows
+  Propagated_window_recorder* m_recorder = nullptr; // see record_propagated_windows
+  std::vector<int> m_round_task; // with a recorder, per half-edge: its task in the round, or -1
 };
 
 } // namespace internal
