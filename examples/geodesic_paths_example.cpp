@@ -48,7 +48,7 @@ int main(int argc, char** argv)
     // One source at vertex 0; build() computes the windows every query reads.
     Geodesic_paths paths(mesh);
     paths.add_source(vertex_descriptor(0));
-    paths.build(); // FWP-MMP; CGAL_ext::parameters::algorithm(CGAL_ext::MMP) for classic MMP
+    paths.build(); // VTP's windows; CGAL_ext::parameters::algorithm(CGAL_ext::MMP) for classic MMP
     std::cout << "distance to vertex " << target << ": " << paths.distance(target) << "\n"
               << "distance to a point of face " << face_point.first << ": " << paths.distance(face_point) << "\n"
               << "(" << paths.statistics().windows_stored << " windows kept on the edges)\n";

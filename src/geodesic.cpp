@@ -4,7 +4,7 @@
 //   geodesic distances MESH --source S[,S...] [--algorithm vtp|pvtp|avtp|pavtp|mmp|fwp-mmp|pmmp]
 //                      [--lambda L] [--threads N] [--batch-size K] [--max-distance D]
 //                      [--output FILE.txt|FILE.ply] [--labels FILE.txt|FILE.ply] [--stats]
-//   geodesic path MESH --source S[,S...] --target T [--algorithm fwp-mmp|mmp|pmmp|vtp|pvtp] [--threads N]
+//   geodesic path MESH --source S[,S...] --target T [--algorithm vtp|pvtp|fwp-mmp|mmp|pmmp] [--threads N]
 //                 [--batch-size K] [--max-distance D] [--output FILE.txt|FILE.obj|FILE.ply] [--stats]
 //   geodesic matrix MESH (--source S[,S...] | --all) [--target T[,T...]|sources] [--max-distance D]
 //                   [--threads N] --output FILE.npy|FILE.mtx|FILE.txt [--stats]

@@ -117,9 +117,9 @@ void add_path_command(CLI::App& app, Path_options& options)
   add_mesh_and_sources(*cmd, options.mesh, options.sources);
   cmd->add_option("--target", options.target, std::string("The end of the path: ") + point_help)->required();
   cmd->add_option("--algorithm", options.solver.algorithm,
-                  "Solver: fwp-mmp (windows bucket by bucket), mmp (windows in exact order), pmmp (fwp-mmp in "
-                  "parallel), vtp or pvtp (parallel; the windows VTP propagates across each face); all exact; "
-                  "default: fwp-mmp");
+                  "Solver: vtp or pvtp (parallel; the windows VTP propagates across each face), fwp-mmp "
+                  "(windows bucket by bucket), mmp (windows in exact order), pmmp (fwp-mmp in parallel); all "
+                  "exact; default: " + std::string(default_vertex_solver));
   cmd->add_option("--threads", options.solver.threads, "pvtp and pmmp: number of threads, at least 1; default: all cores");
   cmd->add_option("--batch-size", options.solver.batch_size,
                   "pvtp: lists, pmmp: windows propagated together, at least 1; default: " +

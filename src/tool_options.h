@@ -61,7 +61,7 @@ struct Path_options
   std::string mesh;
   std::vector<std::string> sources;
   std::string target;
-  Solver_options solver{"fwp-mmp"};
+  Solver_options solver{default_vertex_solver};
   std::string output;
   bool stats = false;
 };

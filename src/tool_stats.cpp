@@ -86,10 +86,13 @@ void write_solver_stats(std::ostream& s, const Solver_choice& choice, const CGAL
     << "wavefront_resets=" << stats.wavefront_resets << "\n";
   if(keeps_windows(*choice.algorithm))
     s << "windows_propagated=" << stats.windows_propagated << "\n"
-      << "windows_deferred=" << stats.windows_deferred << "\n"
-      << "windows_stored=" << stats.windows_stored << "\n"
-      << "stored_window_bytes=" << stats.stored_window_bytes << "\n"
-      << "seconds_organization=" << stats.seconds_organization << "\n"
+      << "windows_deferred=" << stats.windows_deferred << "\n";
+  // VTP keeps windows too when they are read anywhere (path, voronoi)
+  if(keeps_windows(*choice.algorithm) || stats.stored_window_bytes > 0)
+    s << "windows_stored=" << stats.windows_stored << "\n"
+      << "stored_window_bytes=" << stats.stored_window_bytes << "\n";
+  if(keeps_windows(*choice.algorithm))
+    s << "seconds_organization=" << stats.seconds_organization << "\n"
       << "seconds_clipping=" << stats.seconds_clipping << "\n"
       << "seconds_pushing=" << stats.seconds_pushing << "\n";
 }

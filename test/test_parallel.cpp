@@ -335,7 +335,7 @@ struct Pmmp_answers
   std::vector<double> vertex_distances, function_distances, point_distances;
   std::vector<std::size_t> sources;
   std::vector<std::vector<Parallel_paths::Path_point>> paths;
-  std::size_t windows = 0, deferred = 0;
+  std::size_t windows = 0, deferred = 0, stored = 0;
 };
 
 TEST(Parallel_paths, pmmp_and_pvtp_windows_are_identical_for_every_thread_count_and_match_vtp)
@@ -362,6 +362,7 @@ TEST(Parallel_paths, pmmp_and_pvtp_windows_are_identical_for_every_thread_count_
       p.build(number_of_threads(threads).batch_size(batch).statistics(stats).algorithm(algorithm));
       a.windows = stats.windows_created;
       a.deferred = stats.windows_deferred;
+      a.stored = stats.windows_stored; // the store's contents, whichever thread inserted them
       for(Vertex v : m.vertices()) {
         a.vertex_distances.push_back(p.distance(v));
         a.sources.push_back(p.nearest_source(v));
@@ -398,6 +399,7 @@ TEST(Parallel_paths, pmmp_and_pvtp_windows_are_identical_for_every_thread_count_
         EXPECT_EQ(max_difference(many.point_distances, one.point_distances), 0.) << where;
         EXPECT_EQ(many.sources, one.sources) << where;
         EXPECT_EQ(many.windows, one.windows) << where;
+        EXPECT_EQ(many.stored, one.stored) << where;
         EXPECT_EQ(many.deferred, one.deferred) << where;
         ASSERT_EQ(many.paths.size(), one.paths.size());
         for(std::size_t i = 0; i < one.paths.size(); ++i)

@@ -87,10 +87,10 @@ TEST_P(Flat_grid, StraightPathsAndEuclideanDistances)
     s.vertices = {Vertex(0)}; // the corner (0, 0)
   const Point from = c.face_source ? location_point(m, s.faces[0]) : m.point(Vertex(0));
   for(int a = 0; a < 3; ++a) {
-    std::unique_ptr<Paths> p = a == 0 ? built<Paths>(m, s, params::algorithm(CGAL_ext::MMP)) : built<Paths>(m, s);
+    std::unique_ptr<Paths> p = built<Paths>(m, s, params::algorithm(a == 0 ? CGAL_ext::MMP : CGAL_ext::FWP_MMP));
     std::unique_ptr<Parallel_paths> pp;
     if(a == 2)
-      pp = built<Parallel_paths>(m, s);
+      pp = built<Parallel_paths>(m, s, params::algorithm(CGAL_ext::FWP_MMP));
     double worst_distance = 0, worst_length = 0, worst_off = 0;
     auto check = [&](const Point& to, double d, const std::vector<Point>& path, const std::string& what) {
       const double exact = distance_3(from, to);
@@ -418,7 +418,12 @@ TEST(Paths_bad_input, Parameters)
   EXPECT_EQ(stats.vertices, m.number_of_vertices());
   EXPECT_GT(stats.windows_created, 0u);
   EXPECT_GT(stats.windows_stored, 0u);
+  EXPECT_LE(stats.windows_stored, stats.windows_created);
   EXPECT_EQ(p.statistics().windows_stored, stats.windows_stored);
+  EXPECT_GT(stats.lists_propagated, 0u) << "the default is VTP (MMP propagates no lists)";
+  p.build(params::statistics(stats).algorithm(CGAL_ext::FWP_MMP));
+  EXPECT_EQ(stats.lists_propagated, 0u);
+  EXPECT_GT(stats.windows_stored, 0u);
 }
 
 // A source given twice (also as a corner location and as the vertex) counts once, and the
@@ -428,25 +433,28 @@ TEST(Paths_edge_cases, DuplicatedSources)
   const Mesh& m = test_mesh("elephant");
   const Vertex v(1234);
   const Face_location l = location(777, 0.3, 0.3);
-  Paths once(m);
-  once.add_source(v);
-  once.add_source(l);
-  once.build();
-  Paths twice(m);
-  EXPECT_EQ(twice.add_source(corner_location(m, v)), 0u);
-  EXPECT_EQ(twice.add_source(l), 1u);
-  EXPECT_EQ(twice.add_source(v), 2u);
-  EXPECT_EQ(twice.add_source(l), 3u);
-  EXPECT_EQ(twice.number_of_sources(), 4u);
-  twice.build();
-  EXPECT_EQ(max_difference(class_distances(m, twice), class_distances(m, once)), 0.);
-  for(Vertex w : m.vertices())
-    ASSERT_EQ(twice.nearest_source(w), once.nearest_source(w)) << "vertex " << w;
-  EXPECT_EQ(twice.nearest_source(v), 0u);
-  EXPECT_EQ(twice.nearest_source(l), 1u);
-  for(const Face_location& t : face_targets(m, 40, 2)) {
-    EXPECT_EQ(twice.distance(t), once.distance(t)) << describe_target(t);
-    EXPECT_LT(twice.nearest_source(t), 2u) << describe_target(t);
+  for(CGAL_ext::Geodesic_algorithm a : {CGAL_ext::VTP, CGAL_ext::FWP_MMP}) {
+    SCOPED_TRACE(a == CGAL_ext::VTP ? "VTP" : "FWP-MMP");
+    Paths once(m);
+    once.add_source(v);
+    once.add_source(l);
+    once.build(params::algorithm(a));
+    Paths twice(m);
+    EXPECT_EQ(twice.add_source(corner_location(m, v)), 0u);
+    EXPECT_EQ(twice.add_source(l), 1u);
+    EXPECT_EQ(twice.add_source(v), 2u);
+    EXPECT_EQ(twice.add_source(l), 3u);
+    EXPECT_EQ(twice.number_of_sources(), 4u);
+    twice.build(params::algorithm(a));
+    EXPECT_EQ(max_difference(class_distances(m, twice), class_distances(m, once)), 0.);
+    for(Vertex w : m.vertices())
+      ASSERT_EQ(twice.nearest_source(w), once.nearest_source(w)) << "vertex " << w;
+    EXPECT_EQ(twice.nearest_source(v), 0u);
+    EXPECT_EQ(twice.nearest_source(l), 1u);
+    for(const Face_location& t : face_targets(m, 40, 2)) {
+      EXPECT_EQ(twice.distance(t), once.distance(t)) << describe_target(t);
+      EXPECT_LT(twice.nearest_source(t), 2u) << describe_target(t);
+    }
   }
 }
 
@@ -502,14 +510,14 @@ protected:
   {
     s.vertices = {Vertex(100)};
     s.faces = {location(2000, 0.2, 0.5)};
-    full = built<Paths>(m, s);
+    full = built<Paths>(m, s, params::algorithm(CGAL_ext::FWP_MMP));
     double farthest = 0;
     for(Vertex v : m.vertices())
       farthest = std::max(farthest, full->distance(v));
     radius = 0.4 * farthest;
     mmp = built<Paths>(m, s, params::algorithm(CGAL_ext::MMP).max_distance(radius));
-    fwp = built<Paths>(m, s, params::max_distance(radius));
-    pmmp = built<Parallel_paths>(m, s, params::max_distance(radius));
+    fwp = built<Paths>(m, s, params::max_distance(radius).algorithm(CGAL_ext::FWP_MMP));
+    pmmp = built<Parallel_paths>(m, s, params::max_distance(radius).algorithm(CGAL_ext::FWP_MMP));
   }
 
   std::unique_ptr<Paths> mmp, fwp; // built with max_distance(radius)
@@ -648,7 +656,7 @@ TEST(Paths_edge_cases, RefusedBuildKeepsThePreviousOneAndMovesKeepTheBuild)
 {
   const Mesh& m = test_mesh("elephant");
   const Sources s = make_sources(m, SEVERAL_SOURCES);
-  auto p = built<Paths>(m, s);
+  auto p = built<Paths>(m, s, params::algorithm(CGAL_ext::FWP_MMP));
   const std::vector<double> before = class_distances(m, *p);
   const Face_location l = location(3000, 0.1, 0.6);
   const std::vector<Path_point> path = surface_path(*p, l);
@@ -694,7 +702,7 @@ TEST(Paths_edge_cases, NearlyOnAnEdgeOrACorner)
               1e-12 * bbox_diagonal(m));
 }
 
-// CGAL::Parallel_if_available_tag is PMMP with TBB.
+// CGAL::Parallel_if_available_tag is the parallel build with TBB (PVTP's windows by default).
 TEST(Paths_edge_cases, ParallelIfAvailable)
 {
   const Mesh& m = test_mesh("elephant");
@@ -764,8 +772,8 @@ TEST(Paths_threads, ConstQueriesFromSeveralThreads)
 {
   const Mesh& m = test_mesh("elephant");
   const Sources s = make_sources(m, SEVERAL_SOURCES);
-  check_concurrent_queries(m, *built<Paths>(m, s), "FWP-MMP");
-  check_concurrent_queries(m, *built<Parallel_paths>(m, s, params::number_of_threads(2)), "PMMP");
+  check_concurrent_queries(m, *built<Paths>(m, s, params::algorithm(CGAL_ext::FWP_MMP)), "FWP-MMP");
+  check_concurrent_queries(m, *built<Parallel_paths>(m, s, params::number_of_threads(2).algorithm(CGAL_ext::FWP_MMP)), "PMMP");
 }
 
 } // namespace

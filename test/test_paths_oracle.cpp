@@ -95,8 +95,8 @@ void check_vertex_distances(const Mesh& m, const Sources& s, const std::string& 
   ASSERT_TRUE(agrees(vtp, reference, diag, oracle_tolerance, label + " VTP (the reference's check)"));
 
   auto mmp = built<Paths>(m, s, params::algorithm(CGAL_ext::MMP));
-  auto fwp = built<Paths>(m, s); // FWP-MMP, the default
-  auto pmmp = built<Parallel_paths>(m, s, params::number_of_threads(2));
+  auto fwp = built<Paths>(m, s, params::algorithm(CGAL_ext::FWP_MMP));
+  auto pmmp = built<Parallel_paths>(m, s, params::number_of_threads(2).algorithm(CGAL_ext::FWP_MMP));
   auto vtp_windows = built<Paths>(m, s, params::algorithm(CGAL_ext::VTP));
   auto pvtp_windows = built<Parallel_paths>(m, s, params::algorithm(CGAL_ext::VTP).number_of_threads(2));
   const std::vector<std::pair<std::string, std::vector<double>>> runs = {
@@ -170,7 +170,7 @@ TEST_P(Vertex_distances, MatchOracleAndVtp)
   const Sources s = make_sources(m, std::get<1>(GetParam()));
   check_vertex_distances(m, s, name + " " + source_names[std::get<1>(GetParam())]);
   if(name == "blobby_3cc") { // three components: the other two are unreachable from one source
-    auto fwp = built<Paths>(m, s);
+    auto fwp = built<Paths>(m, s, params::algorithm(CGAL_ext::FWP_MMP));
     std::size_t unreachable = 0;
     for(Vertex v : m.vertices())
       unreachable += std::isinf(fwp->distance(v));
@@ -223,8 +223,8 @@ TEST_P(Without_oracle, MatchVtpAndPathsHaveTheirLength)
   s.vertices = {Vertex(168)};
   s.faces = {location(m.number_of_faces() / 2, 0.3, 0.3)};
   const std::vector<double> vtp = solve_mixed(m, s.vertices, s.faces);
-  auto fwp = built<Paths>(m, s);
-  auto pmmp = built<Parallel_paths>(m, s, params::number_of_threads(2));
+  auto fwp = built<Paths>(m, s, params::algorithm(CGAL_ext::FWP_MMP));
+  auto pmmp = built<Parallel_paths>(m, s, params::number_of_threads(2).algorithm(CGAL_ext::FWP_MMP));
   EXPECT_TRUE(agrees(class_distances(m, *fwp), vtp, diag, vtp_tolerance, name + " class FWP-MMP vs VTP"));
   EXPECT_TRUE(agrees(class_distances(m, *pmmp), vtp, diag, vtp_tolerance, name + " class PMMP vs VTP"));
   EXPECT_TRUE(agrees(solve_mixed(m, s.vertices, s.faces, params::algorithm(CGAL_ext::MMP)), vtp, diag, vtp_tolerance,
@@ -258,8 +258,8 @@ TEST_P(Face_point_distances, MatchOracle)
   const Sources s = make_sources(m, kind);
   Oracle_paths reference(m, s.vertices, s.faces);
   auto mmp = built<Paths>(m, s, params::algorithm(CGAL_ext::MMP));
-  auto fwp = built<Paths>(m, s);
-  auto pmmp = built<Parallel_paths>(m, s);
+  auto fwp = built<Paths>(m, s, params::algorithm(CGAL_ext::FWP_MMP));
+  auto pmmp = built<Parallel_paths>(m, s, params::algorithm(CGAL_ext::FWP_MMP));
   auto vtp_windows = built<Paths>(m, s, params::algorithm(CGAL_ext::VTP));
   // each source alone, for the nearest source: the oracle on small meshes, else our own FWP-MMP
   // (checked against the oracle from single sources by the other cases)
@@ -460,8 +460,8 @@ TEST_P(Shortest_paths, ValidAndMatchOracle)
   const Sources s = make_sources(m, kind);
   Oracle_paths reference(m, s.vertices, s.faces);
   auto mmp = built<Paths>(m, s, params::algorithm(CGAL_ext::MMP));
-  auto fwp = built<Paths>(m, s);
-  auto pmmp = built<Parallel_paths>(m, s);
+  auto fwp = built<Paths>(m, s, params::algorithm(CGAL_ext::FWP_MMP));
+  auto pmmp = built<Parallel_paths>(m, s, params::algorithm(CGAL_ext::FWP_MMP));
   auto vtp_windows = built<Paths>(m, s, params::algorithm(CGAL_ext::VTP));
   const std::vector<Vertex> vertex_targets = spread_vertices(m, 30, 101);
   std::vector<Face_location> face_targets_kept;
@@ -509,7 +509,7 @@ TEST_P(Inserted_vertex_reference, BorderEdgesAndNearlyCorners)
   const Mesh& m = test_mesh(name);
   const double diag = bbox_diagonal(m);
   const Sources s{spread_vertices(m, 2, 17), {}};
-  auto fwp = built<Paths>(m, s);
+  auto fwp = built<Paths>(m, s, params::algorithm(CGAL_ext::FWP_MMP));
   auto mmp = built<Paths>(m, s, params::algorithm(CGAL_ext::MMP));
   Oracle_paths reference(m, s.vertices);
   std::vector<Face_location> targets;

@@ -524,8 +524,8 @@ TEST(Tool_options, solver_defaults)
   EXPECT_EQ(distances.max_distance, infinity);
 
   const tool::Solver_choice path = tool::solver_choice(tool::Path_options().solver, true);
-  EXPECT_STREQ(path.algorithm->name, "fwp-mmp");
-  EXPECT_EQ(path.batch_size, CGAL_ext::default_window_batch_size);
+  EXPECT_STREQ(path.algorithm->name, "pvtp");
+  EXPECT_EQ(path.batch_size, CGAL_ext::default_batch_size);
 
   // the batch of PMMP is windows, that of the other batched solvers window lists
   tool::Solver_options pmmp;
@@ -686,7 +686,7 @@ TEST(Tool_command_line, path_fills_its_options)
   EXPECT_EQ(defaults.path.mesh, "m.off");
   EXPECT_EQ(defaults.path.sources, std::vector<std::string>{"0"});
   EXPECT_EQ(defaults.path.target, "f:2:1:0:0");
-  EXPECT_EQ(defaults.path.solver.algorithm, "fwp-mmp");
+  EXPECT_EQ(defaults.path.solver.algorithm, tool::default_vertex_solver);
   EXPECT_EQ(defaults.path.output, "");
   EXPECT_FALSE(defaults.path.stats);
 
@@ -1291,8 +1291,9 @@ TEST_F(Tool, path_between_two_vertices)
 TEST_F(Tool, path_is_the_same_with_every_algorithm)
 {
   const std::string args = "path '" + elephant + "' --source 0,f:7:0.2:0.5:0.3 --target 1500";
-  const std::vector<Point> fwp = path_points(args);
-  EXPECT_EQ(path_points(args + " --algorithm fwp-mmp"), fwp) << "the default is not fwp-mmp";
+  const std::vector<Point> fwp = path_points(args + " --algorithm fwp-mmp");
+  EXPECT_EQ(path_points(args), path_points(args + " --algorithm " + tool::default_vertex_solver))
+    << "the default is not " << tool::default_vertex_solver;
   const double length = polyline_length(fwp);
   for(const char* algorithm : {"mmp", "pmmp", "vtp", "pvtp"}) {
     const std::vector<Point> p = path_points(args + " --algorithm " + algorithm);
@@ -1380,10 +1381,11 @@ TEST_F(Tool, path_stats_on_stderr)
   const std::vector<double> from_0 = distances("distances '" + elephant + "' --source 0");
   const std::vector<double> from_2000 = distances("distances '" + elephant + "' --source 2000");
   ASSERT_LT(from_2000[1000], from_0[1000]) << "the test wants the second source to be the nearest";
-  for(const std::string& algorithm : {"fwp-mmp", "mmp", "pmmp"}) {
+  for(const std::string& algorithm : {"fwp-mmp", "mmp", "pmmp", "vtp", "pvtp"}) {
     SCOPED_TRACE(algorithm);
+    const bool parallel = algorithm == "pmmp" || algorithm == "pvtp";
     const Result r = run("path '" + elephant + "' --source 0 --source 2000 --target 1000 --algorithm " + algorithm +
-                         (algorithm == "pmmp" ? " --threads 2" : "") + " --stats --output p.txt");
+                         (parallel ? " --threads 2" : "") + " --stats --output p.txt");
     ASSERT_EQ(r.exit_code, 0) << r.err;
     const std::vector<Point> p = parse_points(read_text(path("p.txt")));
     ASSERT_GE(p.size(), 2u);
@@ -1396,15 +1398,18 @@ TEST_F(Tool, path_stats_on_stderr)
                                      "seconds_propagation", "seconds_merge", "windows_created", "peak_windows",
                                      "lists_propagated", "wavefront_resets", "peak_rss_mb", "length",
                                      "distance", "points", "nearest_source"};
-    keys.insert(keys.end(), mmp_keys.begin(), mmp_keys.end());
+    if(is_mmp(algorithm))
+      keys.insert(keys.end(), mmp_keys.begin(), mmp_keys.end());
+    else // VTP's windows are kept too, and reported so
+      keys.insert(keys.end(), {"windows_stored", "stored_window_bytes"});
     keys.insert(keys.end(), repair_keys.begin(), repair_keys.end());
-    if(algorithm == "pmmp")
+    if(parallel)
       keys.push_back("threads");
     ASSERT_NO_FATAL_FAILURE(expect_non_negative_numbers(kv, keys, r.err));
     expect_no_repair(kv);
     EXPECT_EQ(kv.size(), keys.size() + 1) << r.err;
     EXPECT_EQ(kv.at("algorithm"), algorithm);
-    if(algorithm == "pmmp")
+    if(parallel)
       EXPECT_EQ(kv.at("threads"), "2");
     EXPECT_EQ(kv.at("vertices"), "2775");
     EXPECT_EQ(kv.at("faces"), "5558");
@@ -1749,7 +1754,7 @@ const Bad_case bad_cases[] = {
    "unknown algorithm 'dijkstra' (use vtp, pvtp, fwp-mmp, mmp or pmmp)"},
   {"path_lambda", P + " --source 0 --target 5 --lambda 8", "p.txt", "--lambda"},
   {"path_lambda_with_mmp", P + " --source 0 --target 5 --algorithm mmp --lambda 8", "p.txt", "--lambda"},
-  {"path_threads_with_fwp_mmp", P + " --source 0 --target 5 --threads 2", "p.txt", "error: --threads applies to pvtp and pmmp only"},
+  {"path_threads_with_fwp_mmp", P + " --source 0 --target 5 --algorithm fwp-mmp --threads 2", "p.txt", "error: --threads applies to pvtp and pmmp only"},
   {"path_threads_zero", P + " --source 0 --target 5 --algorithm pmmp --threads 0", "p.txt", "--threads must be a positive integer"},
   {"path_batch_size_with_mmp", P + " --source 0 --target 5 --algorithm mmp --batch-size 8", "p.txt",
    "error: --batch-size applies to pvtp and pmmp only"},

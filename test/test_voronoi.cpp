@@ -117,7 +117,7 @@ void expect_exact_diagram(const Mesh& m, const std::vector<Face_location>& sourc
   }
 }
 
-/// The diagram read from FWP-MMP's windows (the default), or from VTP's.
+/// The diagram read from FWP-MMP's windows, or from VTP's (the default).
 auto diagram_of(const Mesh& m, const std::vector<Face_location>& sources, CGAL_ext::Geodesic_algorithm algorithm)
 {
   return CGAL_ext::geodesic_voronoi_diagram(m, sources, CGAL_ext::parameters::algorithm(algorithm));
@@ -133,7 +133,7 @@ TEST(Geodesic_voronoi, bisectors_and_vertices_are_exact_on_real_meshes)
     const Mesh& m = test_mesh(name);
     const std::vector<Face_location> sources =
       spread_sources(m, 5, 3, location(m.number_of_faces() / 3, 0.3, 0.3));
-    const auto d = CGAL_ext::geodesic_voronoi_diagram(m, sources);
+    const auto d = diagram_of(m, sources, CGAL_ext::FWP_MMP);
     expect_exact_diagram(m, sources, d, name);
     EXPECT_GE(d.vertices.size(), 2u) << name;
     // the diagram read from VTP's windows is exact too, and has the same cells and dual graph
@@ -141,6 +141,11 @@ TEST(Geodesic_voronoi, bisectors_and_vertices_are_exact_on_real_meshes)
     expect_exact_diagram(m, sources, v, name + name_of(CGAL_ext::VTP));
     EXPECT_EQ(v.dual_edges, d.dual_edges) << name;
     EXPECT_EQ(v.dual_triangles, d.dual_triangles) << name;
+    // the default is VTP's
+    const auto by_default = CGAL_ext::geodesic_voronoi_diagram(m, sources);
+    EXPECT_EQ(by_default.vertex_distance, v.vertex_distance) << name;
+    EXPECT_EQ(by_default.vertex_cell, v.vertex_cell) << name;
+    EXPECT_EQ(by_default.dual_edges, v.dual_edges) << name;
     // PMMP and PVTP give the same diagram for every thread count (FWP_MMP with Parallel_tag: PMMP)
     for(int threads : {1, 2}) {
       for(CGAL_ext::Geodesic_algorithm algorithm : diagram_algorithms) {

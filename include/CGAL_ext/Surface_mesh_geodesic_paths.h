@@ -3,7 +3,8 @@
 #define CGAL_EXT_SURFACE_MESH_GEODESIC_PATHS_H
 
 /// \file Surface_mesh_geodesic_paths.h
-/// Exact geodesic distances at any surface point and shortest paths, by MMP, FWP-MMP or PMMP.
+/// Exact geodesic distances at any surface point and shortest paths, from the windows of VTP or
+/// PVTP (the default), MMP, FWP-MMP or PMMP.
 
 #include <CGAL_ext/Geodesics_3/Geodesic_algorithm.h>
 #include <CGAL_ext/Geodesics_3/Geodesic_error.h>
@@ -30,13 +31,14 @@ namespace CGAL_ext {
 /// source of any point, and shortest paths, computed once by `build()` and then queried.
 ///
 /// `build()` propagates windows (bundles of straight paths unfolded across faces) and keeps
-/// them on the edges: with `CGAL_ext::MMP` in exact order of distance (Mitchell, Mount and
-/// Papadimitriou), with `CGAL_ext::FWP_MMP` (the default) bucket by bucket, and with
-/// `CGAL::Parallel_tag` as PMMP on TBB threads (thesis chapter 3). With `CGAL_ext::VTP` it keeps
-/// instead the windows that VTP (PVTP with `CGAL::Parallel_tag`) propagates across each face,
-/// clipped against each other as MMP clips its own: faster where MMP's store and queue dominate
-/// (many sources, meshes of many saddle vertices). All give the same distances up to round-off;
-/// PMMP and PVTP give the same for every number of threads.
+/// them on the edges. With `CGAL_ext::VTP` (the default) it keeps the windows that VTP (PVTP on
+/// TBB threads with `CGAL::Parallel_tag`) propagates across each face, clipped against each
+/// other on each edge; with `CGAL_ext::MMP` the windows of MMP in exact order of distance
+/// (Mitchell, Mount and Papadimitriou), with `CGAL_ext::FWP_MMP` bucket by bucket, PMMP with
+/// `CGAL::Parallel_tag` (thesis chapter 3). All give the same distances up to round-off; PVTP
+/// and PMMP give the same for every number of threads. VTP's build is the fastest: from one
+/// source on a 416k-vertex mesh VTP's took 0.55-0.75x FWP-MMP's time on one thread, and PVTP's
+/// 0.5-0.6x PMMP's on two (doc/experiments.md).
 ///
 /// After `build()` every query is `const` and may run on any number of threads at once.
 /// A point is a vertex or a face location: a face and barycentric coordinates in the order of the
@@ -200,23 +202,23 @@ public:
   ///
   /// \cgalNamedParamsBegin
   ///   \cgalParamNBegin{algorithm}
-  ///     \cgalParamDescription{`CGAL_ext::MMP` (windows in exact order, from a binary heap, sequential
-  ///                           only), `CGAL_ext::FWP_MMP` (bucket by bucket; PMMP with
-  ///                           `CGAL::Parallel_tag`), or `CGAL_ext::VTP` (the windows VTP propagates
-  ///                           across each face, clipped into the same store; PVTP with
+  ///     \cgalParamDescription{`CGAL_ext::VTP` (the windows VTP propagates across each face, clipped
+  ///                           against each other on each edge; PVTP with `CGAL::Parallel_tag`),
+  ///                           `CGAL_ext::MMP` (windows in exact order, from a binary heap, sequential
+  ///                           only) or `CGAL_ext::FWP_MMP` (bucket by bucket; PMMP with
   ///                           `CGAL::Parallel_tag`): all exact, the same distances to round-off}
   ///     \cgalParamType{`CGAL_ext::Geodesic_algorithm`}
-  ///     \cgalParamDefault{`CGAL_ext::FWP_MMP`}
+  ///     \cgalParamDefault{`CGAL_ext::VTP`}
   ///   \cgalParamNEnd
   ///   \cgalParamNBegin{number_of_threads}
-  ///     \cgalParamDescription{PMMP: the number of threads (in a `tbb::task_arena`), `0` for as many as TBB chooses}
+  ///     \cgalParamDescription{PVTP and PMMP: the number of threads (in a `tbb::task_arena`), `0` for as many as TBB chooses}
   ///     \cgalParamType{`int`, non-negative}
   ///     \cgalParamDefault{`0`}
   ///   \cgalParamNEnd
   ///   \cgalParamNBegin{batch_size}
-  ///     \cgalParamDescription{PMMP: how many windows are selected and propagated together at most}
+  ///     \cgalParamDescription{PVTP: how many window lists, PMMP: how many windows are propagated together at most}
   ///     \cgalParamType{`std::size_t`, positive}
-  ///     \cgalParamDefault{`CGAL_ext::default_window_batch_size` (1024)}
+  ///     \cgalParamDefault{`CGAL_ext::default_batch_size` (512) for PVTP, `CGAL_ext::default_window_batch_size` (1024) for PMMP}
   ///   \cgalParamNEnd
   ///   \cgalParamNBegin{max_distance}
   ///     \cgalParamDescription{the propagation stops beyond this distance; farther points are at `+infinity`}
@@ -253,8 +255,8 @@ public:
     m_tracer = std::make_unique<internal::Geodesic_path_tracer>(windows->windows(), solver.distances(),
                                                                 solver.nearest_sources(), solver.sources(),
                                                                 solver.max_distance());
+    m_statistics = internal::report_statistics(settings, windows->statistics(), m_mesh.seconds());
     m_build = std::move(windows);
-    m_statistics = internal::report_statistics(settings, solver.statistics(), m_mesh.seconds());
   }
 
   /// \return whether `build()` ran since the sources last changed

@@ -77,12 +77,12 @@ struct Geodesic_voronoi_diagram
 /// and the dual graph.
 ///
 /// The diagram is read from one exact multi-source propagation, whose windows give the distance
-/// and nearest source at any point of the surface: FWP-MMP by default (PMMP with
-/// `CGAL::Parallel_tag`), or with `algorithm(VTP)` VTP (PVTP), whose windows are kept as they
-/// are propagated across each face and clipped against each other into the same store as MMP's
-/// (VTP drops a path only where another is at least as short, so these windows and the paths
-/// through the vertices give every distance; on the README's golf ball with 60 sources
-/// 1.5-1.9x faster than MMP). In each face the nearest source is followed along the
+/// and nearest source at any point of the surface: VTP's by default (PVTP with
+/// `CGAL::Parallel_tag`), kept as they are propagated across each face and clipped against each
+/// other on each edge (VTP drops a path only where another is at least as short, so these
+/// windows and the paths through the vertices give every distance), or with `algorithm(FWP_MMP)`
+/// or `algorithm(MMP)` those MMP keeps (PMMP with `CGAL::Parallel_tag`); the same cells. On the
+/// README's golf ball with 60 sources VTP's is 1.5-1.9x faster than MMP's. In each face the nearest source is followed along the
 /// boundary (each edge is cut where its windows change, and every change of the nearest source
 /// is located by bisection to 1e-12 of the segment searched, at most an edge); a face crossed
 /// by two cells holds one bisector, whose inner points are found the same way; a face where
@@ -98,7 +98,7 @@ struct Geodesic_voronoi_diagram
 ///
 /// \param tm the triangle mesh
 /// \param sources the sites of the diagram; a duplicated source has an empty cell
-/// \param np optional named parameters: `algorithm` (`FWP_MMP`, `MMP` or `VTP`), `number_of_threads`,
+/// \param np optional named parameters: `algorithm` (`VTP`, the default, `FWP_MMP` or `MMP`), `number_of_threads`,
 ///        `batch_size`, `glued_vertices`, and
 ///        CGAL's `vertex_point_map`, `vertex_index_map`, `face_index_map`, as for `geodesic_distances()`
 /// \return the diagram

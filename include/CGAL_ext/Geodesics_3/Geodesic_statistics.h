@@ -20,8 +20,8 @@ struct Geodesic_statistics
   std::size_t wavefront_resets = 0;  ///< approximation only: times the wavefront was reset
   std::size_t windows_propagated = 0; ///< MMP family: windows taken from the queue and propagated
   std::size_t windows_deferred = 0;  ///< FWP-MMP and PMMP: windows taken whose distance had moved to a later bucket, queued again
-  std::size_t windows_stored = 0;    ///< MMP family: windows kept on the edges for queries after the build
-  std::size_t stored_window_bytes = 0; ///< MMP family: memory of the kept windows and the edge lists
+  std::size_t windows_stored = 0;    ///< MMP family, and VTP's windows kept for paths: windows kept on the edges for queries after the build
+  std::size_t stored_window_bytes = 0; ///< the same: memory of the kept windows and the edge lists
   std::size_t batched_runs_kept = 0;  ///< farthest-point sampling on two threads or more: samples whose run went at once with an earlier sample's and was kept
   std::size_t batched_runs_undone = 0; ///< the same, undone (the next sample was another vertex, or the runs met)
   double seconds_setup = 0;          ///< building the mesh cache and checking the input

@@ -115,12 +115,11 @@ private:
 
   void start_from_sources()
   {
+    const std::vector<bool> repeated = repeated_sources(m_sources);
     for(std::size_t i = 0; i < m_sources.size(); ++i) {
       const Source_point& s = m_sources[i];
-      if(std::find_if(m_sources.begin(), m_sources.begin() + i, [&](const Source_point& t) {
-           return t.vertex == s.vertex && t.face == s.face && t.barycentric == s.barycentric;
-         }) != m_sources.begin() + i)
-        continue; // a duplicate: the first one is the nearest
+      if(repeated[i])
+        continue;
       const int index = int(i);
       if(s.vertex >= 0) {
         m_emits_when_taken[s.vertex] = 1;

@@ -69,13 +69,14 @@ private:
 };
 
 /// The settings of a build whose windows are read anywhere on the surface (`what` names it in the
-/// messages): exact, whole, FWP-MMP by default.
+/// messages): exact, whole, VTP by default (PVTP in parallel: faster than MMP and PMMP, table in
+/// doc/experiments.md).
 template <class NamedParameters>
 Solver_settings read_window_build_settings(const NamedParameters& np, const char* what)
 {
   if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::stop_vertices_t>::value)
     throw Geodesic_error(std::string(what) + " takes no stop_vertices: its windows are read anywhere");
-  const Solver_settings settings = read_solver_settings(np, FWP_MMP);
+  const Solver_settings settings = read_solver_settings(np, VTP);
   if(settings.approximation > 0)
     throw Geodesic_error(std::string(what) + " is exact: it takes no approximation");
   return settings;
@@ -97,6 +98,18 @@ public:
   Solver_base& solver() { return m_vtp ? static_cast<Solver_base&>(m_vtp->solver()) : *m_mmp; }
   const Solver_base& solver() const { return m_vtp ? static_cast<const Solver_base&>(m_vtp->solver()) : *m_mmp; }
   const Edge_window_store& windows() const { return m_vtp ? m_vtp->windows() : m_mmp->windows(); }
+
+  /// The solver's statistics after `run`, with the store's windows and memory (MMP reports them
+  /// itself).
+  Geodesic_statistics statistics() const
+  {
+    Geodesic_statistics s = solver().statistics();
+    if(m_vtp) {
+      s.windows_stored = m_vtp->windows().live();
+      s.stored_window_bytes = m_vtp->windows().stored_bytes();
+    }
+    return s;
+  }
 
   /// Runs the solver in a task arena of `threads` (see `run_solver`).
   template <bool parallel>

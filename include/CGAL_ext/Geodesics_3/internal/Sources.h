@@ -14,6 +14,7 @@
 #include <limits>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace CGAL_ext {
@@ -28,6 +29,26 @@ struct Source_point
   int face = -1;
   std::array<double, 3> barycentric{{0., 0., 0.}};
 };
+
+/// Per source, whether an earlier one is the same point: a repeat emits nothing, so that the
+/// first of equal sources is the nearest (with both, the windows of the later one could win the
+/// clipping's ties).
+inline std::vector<bool> repeated_sources(const std::vector<Source_point>& sources)
+{
+  std::vector<std::size_t> order(sources.size());
+  for(std::size_t i = 0; i < order.size(); ++i)
+    order[i] = i;
+  auto key = [&](std::size_t i) {
+    const Source_point& s = sources[i];
+    return std::make_tuple(s.vertex, s.face, s.barycentric);
+  };
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return key(a) < key(b); });
+  std::vector<bool> repeated(sources.size(), false);
+  for(std::size_t i = 1; i < order.size(); ++i)
+    if(key(order[i]) == key(order[i - 1]))
+      repeated[order[i]] = true;
+  return repeated;
+}
 
 /// Throws when there is no source to start from.
 /// Throws when there is no source, or when every source is a vertex in no face.

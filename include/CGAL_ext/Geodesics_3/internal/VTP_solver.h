@@ -174,7 +174,7 @@ public:
   void record_propagated_windows(Propagated_window_recorder* recorder)
   {
     m_recorder = recorder;
-    if(recorder)
+    if(recorder && m_batched)
       m_round_task.assign(m_mesh.number_of_halfedges(), -1);
     else
       m_round_task = std::vector<int>();
@@ -275,7 +275,10 @@ public:
     m_list_buffers.resize(m_pool.number_of_slots());
     if(m_recorder)
       m_recorder->start_run(m_parallel);
+    const std::vector<bool> repeated = repeated_sources(m_sources);
     for(const Source_point& s : m_sources) {
+      if(repeated[std::size_t(&s - m_sources.data())])
+        continue;
       const int index = m_first_source_index + int(&s - m_sources.data());
       if(s.vertex >= 0) {
         note_read(s.vertex);
@@ -324,6 +327,12 @@ private:
     for(int v : m_stop_vertices)
       m_is_stop[v] = 0;
     m_stop_vertices.clear();
+    if(m_recorder) { // what a run that threw may have left of a round being recorded
+      std::fill(m_round_task.begin(), m_round_task.end(), -1);
+      for(List_task& task : m_tasks)
+        task.propagated.clear();
+      m_task_one.propagated.clear();
+    }
     m_stops_taken = 0;
     m_stop_limit = infinity();
     m_stop_floor = 0;
@@ -997,7 +1006,7 @@ private:
   bool m_flushing = false; // lists are scheduled whether or not they are in the swept region
   const bool m_batched;    // take vertices from buckets, propagate lists in batches
   Propagated_window_recorder* m_recorder = nullptr; // see record_propagated_windows
-  std::vector<int> m_round_task; // with a recorder, per half-edge: its task in the round, or -1
+  std::vector<int> m_round_task; // batched, with a recorder: per half-edge, its task in the round or -1
 };
 
 } // namespace internal
