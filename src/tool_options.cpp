@@ -155,7 +155,7 @@ Solver_choice solver_choice(const Solver_options& options, bool exact_only)
   choice.algorithm = found;
   if(found->parallel && !parallel_available)
     throw Tool_error(std::string("--algorithm ") + found->name + " needs TBB; this geodesic was built without it");
-  choice.batch_size = keeps_windows(*found) ? CGAL_ext::default_window_batch_size : CGAL_ext::default_batch_size;
+  choice.batch_size = is_mmp_family(*found) ? CGAL_ext::default_window_batch_size : CGAL_ext::default_batch_size;
 
   const auto invalid = [](const char* option, const char* expected, auto value) {
     return Tool_error(std::string(option) + " must be " + expected + ", got " + number_text(value));

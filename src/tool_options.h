@@ -98,7 +98,7 @@ inline const Algorithm algorithms[] = {
 
 /// Whether the solver is of the MMP family, which keeps every window on the edges: its batch is
 /// of windows (not of lists) and it reports its store and queue in the statistics.
-inline bool keeps_windows(const Algorithm& a) { return a.library != CGAL_ext::VTP; }
+inline bool is_mmp_family(const Algorithm& a) { return a.library != CGAL_ext::VTP; }
 
 constexpr double default_lambda = 8;
 

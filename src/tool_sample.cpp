@@ -65,7 +65,7 @@ int run_sample(const Sample_options& options)
   if(options.radius && !(*options.radius > 0))
     throw Tool_error("--radius must be positive, got " + number_text(*options.radius));
   const Solver_choice choice = solver_choice(options.solver, false);
-  if(keeps_windows(*choice.algorithm))
+  if(is_mmp_family(*choice.algorithm))
     throw Tool_error(std::string("--algorithm ") + choice.algorithm->name +
                      ": sampling runs vtp, pvtp, avtp or pavtp");
   if(!options.output.empty() && output_format(options.output) != Output_format::txt)

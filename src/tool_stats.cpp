@@ -84,14 +84,15 @@ void write_solver_stats(std::ostream& s, const Solver_choice& choice, const CGAL
     << "peak_windows=" << stats.peak_windows << "\n"
     << "lists_propagated=" << stats.lists_propagated << "\n"
     << "wavefront_resets=" << stats.wavefront_resets << "\n";
-  if(keeps_windows(*choice.algorithm))
+  const bool mmp = is_mmp_family(*choice.algorithm);
+  if(mmp)
     s << "windows_propagated=" << stats.windows_propagated << "\n"
       << "windows_deferred=" << stats.windows_deferred << "\n";
   // VTP keeps windows too when they are read anywhere (path, voronoi)
-  if(keeps_windows(*choice.algorithm) || stats.stored_window_bytes > 0)
+  if(mmp || stats.stored_window_bytes > 0)
     s << "windows_stored=" << stats.windows_stored << "\n"
       << "stored_window_bytes=" << stats.stored_window_bytes << "\n";
-  if(keeps_windows(*choice.algorithm))
+  if(mmp)
     s << "seconds_organization=" << stats.seconds_organization << "\n"
       << "seconds_clipping=" << stats.seconds_clipping << "\n"
       << "seconds_pushing=" << stats.seconds_pushing << "\n";
