@@ -8,7 +8,7 @@
 //                 [--batch-size K] [--max-distance D] [--output FILE.txt|FILE.obj|FILE.ply] [--stats]
 //   geodesic matrix MESH (--source S[,S...] | --all) [--target T[,T...]|sources] [--max-distance D]
 //                   [--threads N] --output FILE.npy|FILE.mtx|FILE.txt [--stats]
-//   geodesic sample MESH (--count N | --radius R) [--first V] [--algorithm vtp|pvtp|avtp|pavtp]
+//   geodesic sample MESH (--count N | --radius R) [--first V[,V...]] [--algorithm vtp|pvtp|avtp|pavtp]
 //                   [--threads N] [--output FILE.txt] [--labels FILE.txt|FILE.ply] [--stats]
 //   geodesic voronoi MESH --source S[,S...] [--algorithm vtp|pvtp|fwp-mmp|mmp|pmmp] [--threads N]
 //                    --output CELLS.txt|CELLS.ply [--bisectors FILE.obj|FILE.txt] [--dual FILE.obj] [--stats]

@@ -29,7 +29,11 @@ void add_sample_command(CLI::App& app, Sample_options& options)
                   "Stop once every vertex is within this geodesic distance of a sample (with --count: whichever "
                   "comes first)");
   cmd->add_option("--first", options.first,
-                  "The first sample, a vertex id; default: the vertex farthest from vertex 0");
+                  "The first sample, a vertex id; default: the vertex farthest from vertex 0. Several, "
+                  "comma-separated: the first samples, taken as given, from one propagation (faster than as many "
+                  "farthest points when vertices far apart are known); the sampling goes on from them")
+    ->delimiter(',')
+    ->allow_extra_args(false);
   cmd->add_option("--algorithm", options.solver.algorithm,
                   "Solver of each sample's propagation: vtp (exact), pvtp (exact, parallel), avtp or pavtp "
                   "(approximate); default: " + std::string(default_vertex_solver));
@@ -72,27 +76,33 @@ int run_sample(const Sample_options& options)
     throw Tool_error("--output '" + options.output + "': the samples are written as .txt");
   const Output_format labels_format = options.labels.empty() ? Output_format::txt : output_format(options.labels);
   check_distinct_outputs({{"--output", options.output}, {"--labels", options.labels}});
-  std::optional<Surface_point> first;
-  if(options.first) {
-    first = parse_surface_point(*options.first, "first sample");
-    if(!first->vertex)
-      throw Tool_error("first sample '" + *options.first + "': give a vertex id");
+  std::vector<Surface_point> first;
+  for(const std::string& text : options.first) {
+    first.push_back(parse_surface_point(text, "first sample"));
+    if(!first.back().vertex)
+      throw Tool_error("first sample '" + text + "': give a vertex id");
+    for(std::size_t k = 0; k + 1 < first.size(); ++k)
+      if(*first[k].vertex == *first.back().vertex)
+        throw Tool_error("first sample '" + text + "' is given twice");
   }
+  if(options.count && first.size() > std::size_t(*options.count))
+    throw Tool_error("--first gives " + std::to_string(first.size()) + " samples, more than --count " +
+                     std::to_string(*options.count));
 
   const Stopwatch read_watch;
   const Mesh_file file = read_mesh_file(options.mesh);
   const double seconds_read = read_watch.seconds();
   const std::size_t points = file.soup.points.size();
-  if(first)
-    check_surface_point_range(*first, points, file.soup.polygons.size(), "first sample");
+  for(const Surface_point& point : first)
+    check_surface_point_range(point, points, file.soup.polygons.size(), "first sample");
   Sampling_request request;
   request.count = options.count ? std::size_t(*options.count) : points;
   if(request.count > points)
     throw Tool_error("--count " + std::to_string(request.count) + " is more than the " + std::to_string(points) +
                      " vertices of the file");
   request.radius = options.radius.value_or(0.);
-  if(first)
-    request.first = *first->vertex;
+  for(const Surface_point& point : first)
+    request.first.push_back(*point.vertex);
 
   const Stopwatch solve_watch;
   const Sampling_result result = compute_samples(file, request, choice);

@@ -24,7 +24,7 @@ struct Sample_options
   std::string mesh;
   std::optional<long long> count;
   std::optional<double> radius;
-  std::optional<std::string> first;
+  std::vector<std::string> first; // one vertex id, or several (the initial samples)
   Solver_options solver{default_vertex_solver};
   std::string output;
   std::string labels;

@@ -69,7 +69,7 @@ struct Sampling_request
 {
   std::size_t count = 0;            // at most this many samples, at least 1
   double radius = 0;                // stop once every vertex is this close to a sample; 0: none
-  std::optional<std::size_t> first; // the first sample, a point of the file
+  std::vector<std::size_t> first;   // the first sample, or the initial samples, points of the file
 };
 
 /// Farthest-point samples, as points of the file, with the covering radius after each, and the

@@ -55,17 +55,19 @@ std::size_t argmax(const std::vector<double>& d)
   return best;
 }
 
-/// Checks, by one single-source solve per sample, that each sample after the first is the
-/// vertex farthest from the ones before it and each covering radius the largest distance to
-/// the samples so far, never increasing; returns the distance to the nearest sample.
-std::vector<double> expect_each_sample_farthest(const Mesh& m, const Sampling& s, const std::string& name)
+/// Checks, by one single-source solve per sample, that each sample after the first `initial`
+/// ones is the vertex farthest from the ones before it and each covering radius the largest
+/// distance to the samples so far, never increasing (the initial samples': the one after all of
+/// them); returns the distance to the nearest sample.
+std::vector<double> expect_each_sample_farthest(const Mesh& m, const Sampling& s, const std::string& name,
+                                                std::size_t initial = 1)
 {
   const double tolerance = 1e-12 * bbox_diagonal(m);
   // +infinity (a component no sample reaches yet) only equals itself
   auto same_distance = [&](double a, double b) { return std::isinf(b) ? a == b : std::abs(a - b) <= tolerance; };
   std::vector<double> nearest(m.number_of_vertices(), inf);
   for(std::size_t k = 0; k < s.samples.size(); ++k) {
-    if(k > 0) {
+    if(k >= initial) {
       const double farthest = nearest[argmax(nearest)];
       EXPECT_PRED2(same_distance, nearest[s.samples[k].idx()], farthest) << name << ": sample " << k;
       EXPECT_LE(s.radii[k], s.radii[k - 1]) << name << ": sample " << k;
@@ -73,7 +75,10 @@ std::vector<double> expect_each_sample_farthest(const Mesh& m, const Sampling& s
     const std::vector<double> d = solve(m, s.samples[k]);
     for(std::size_t v = 0; v < nearest.size(); ++v)
       nearest[v] = std::min(nearest[v], d[v]);
-    EXPECT_PRED2(same_distance, s.radii[k], nearest[argmax(nearest)]) << name << ": radius after sample " << k;
+    if(k + 1 >= initial)
+      EXPECT_PRED2(same_distance, s.radii[k], nearest[argmax(nearest)]) << name << ": radius after sample " << k;
+    else
+      EXPECT_EQ(s.radii[k], s.radii[initial - 1]) << name << ": radius after initial sample " << k;
   }
   return nearest;
 }
@@ -220,6 +225,45 @@ TEST(Farthest_point_sampling, later_samples_sweep_only_their_cells)
     << "samples 31 to 40 made " << forty - thirty << " windows, one full solve " << full.windows_created;
 }
 
+// Initial samples are taken as given, in order, from one propagation; the samples after them
+// are the exact farthest ones; the distances and labels are the multi-source solve's; PVTP gives
+// the same for every thread count.
+TEST(Farthest_point_sampling, initial_samples_then_farthest_points)
+{
+  const Mesh& m = test_mesh("elephant");
+  const std::vector<Vertex> initial{Vertex(900), Vertex(100), Vertex(2000)};
+  const std::size_t n = 10;
+  const Sampling s = sample(m, n, CGAL_ext::parameters::initial_samples(initial));
+  ASSERT_EQ(s.samples.size(), n);
+  EXPECT_EQ(std::vector<Vertex>(s.samples.begin(), s.samples.begin() + 3), initial);
+  const std::vector<double> nearest = expect_each_sample_farthest(m, s, "elephant", initial.size());
+  const double tolerance = 1e-12 * bbox_diagonal(m);
+  EXPECT_LE(max_difference(s.distances, nearest), tolerance);
+  EXPECT_LE(max_difference(s.distances, solve(m, s.samples)), tolerance);
+  for(std::size_t k = 0; k < n; ++k)
+    EXPECT_EQ(s.labels[s.samples[k].idx()], long(k)) << "the cell of sample " << k;
+  // one propagation for the three: fewer windows than three single-source ones
+  const Sampling first_three = sample(m, 3, CGAL_ext::parameters::initial_samples(initial));
+  EXPECT_EQ(first_three.samples, initial);
+  std::size_t single = 0;
+  for(Vertex v : initial)
+    single += sample(m, 1, CGAL_ext::parameters::first_sample(v)).statistics.windows_created;
+  EXPECT_LT(first_three.statistics.windows_created, single);
+  // as many initial samples as asked: just those
+  EXPECT_EQ(sample(m, 3, CGAL_ext::parameters::initial_samples(initial)).samples, initial);
+
+  const Sampling one = sample<CGAL::Parallel_tag>(m, 60, number_of_threads(1).initial_samples(initial));
+  for(int threads : {2, 4}) {
+    const Sampling many = sample<CGAL::Parallel_tag>(m, 60, number_of_threads(threads).initial_samples(initial));
+    EXPECT_EQ(many.samples, one.samples) << threads << " threads";
+    EXPECT_EQ(many.radii, one.radii) << threads << " threads";
+    EXPECT_EQ(many.distances, one.distances) << threads << " threads";
+    EXPECT_EQ(many.labels, one.labels) << threads << " threads";
+  }
+  const Sampling sequential = sample(m, 60, CGAL_ext::parameters::initial_samples(initial));
+  EXPECT_EQ(one.samples, sequential.samples);
+}
+
 // Several components each get a sample before any gets a second; a vertex in no face is a
 // component of its own.
 TEST(Farthest_point_sampling, every_component_is_sampled_first)
@@ -251,6 +295,20 @@ TEST(Farthest_point_sampling, every_component_is_sampled_first)
   // the fourth: the corner of the first square opposite vertex 0
   EXPECT_EQ(s.samples[3], Vertex(24));
   EXPECT_NEAR(s.radii[3], std::sqrt(2.), 1e-12);
+
+  // initial samples with the isolated vertex between two of the first square: each its own
+  // label, the other square sampled next
+  const Sampling from = sample(m, 4, CGAL_ext::parameters::initial_samples(std::vector<Vertex>{Vertex(0), isolated, Vertex(24)}));
+  ASSERT_EQ(from.samples.size(), 4u);
+  EXPECT_EQ(from.samples[3], Vertex(25));
+  EXPECT_EQ(from.radii[0], inf);
+  EXPECT_EQ(from.radii[2], inf);
+  EXPECT_EQ(from.labels[0], 0);
+  EXPECT_EQ(from.labels[isolated.idx()], 1);
+  EXPECT_EQ(from.labels[24], 2);
+  EXPECT_EQ(from.labels[1], 0);  // (0.25, 0), nearer vertex 0
+  EXPECT_EQ(from.labels[23], 2); // (0.75, 1), nearer vertex 24
+  EXPECT_NEAR(from.distances[12], std::sqrt(0.5), 1e-12); // the centre, as far from both corners
 }
 
 TEST(Farthest_point_sampling, bad_requests_are_named)
@@ -268,6 +326,16 @@ TEST(Farthest_point_sampling, bad_requests_are_named)
   EXPECT_TRUE(throws_geodesic_error(fps(3, CGAL_ext::parameters::first_sample(Vertex(5000))),
                                     {"first sample vertex 5000", "out of range"}));
   EXPECT_TRUE(throws_geodesic_error(fps(3, CGAL_ext::parameters::max_distance(1.)), {"max_distance"}));
+  using V = std::vector<Vertex>;
+  EXPECT_TRUE(throws_geodesic_error(fps(3, CGAL_ext::parameters::initial_samples(V{})), {"initial_samples", "empty"}));
+  EXPECT_TRUE(throws_geodesic_error(fps(3, CGAL_ext::parameters::initial_samples(V{Vertex(1), Vertex(5000)})),
+                                    {"initial sample vertex 5000", "out of range"}));
+  EXPECT_TRUE(throws_geodesic_error(fps(3, CGAL_ext::parameters::initial_samples(V{Vertex(7), Vertex(1), Vertex(7)})),
+                                    {"initial sample 7", "twice"}));
+  EXPECT_TRUE(throws_geodesic_error(fps(2, CGAL_ext::parameters::initial_samples(V{Vertex(1), Vertex(2), Vertex(3)})),
+                                    {"3 initial samples", "2 samples"}));
+  EXPECT_TRUE(throws_geodesic_error(
+    fps(3, CGAL_ext::parameters::initial_samples(V{Vertex(1)}).first_sample(Vertex(2))), {"initial_samples", "first_sample"}));
   EXPECT_TRUE(throws_geodesic_error(fps(3, CGAL_ext::parameters::algorithm(CGAL_ext::MMP)), {"VTP"}));
 
   // 5 vertices but 4 distinct points (vertex 4 is vertex 2, by a zero-length edge)

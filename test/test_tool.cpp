@@ -1777,6 +1777,9 @@ const Bad_case bad_cases[] = {
   {"sample_radius_zero", S + " --radius 0", "s.txt", "--radius must be positive, got 0"},
   {"sample_first_out_of_range", S + " --count 3 --first 2775", "s.txt", "first sample '2775'"},
   {"sample_first_face_point", S + " --count 3 --first f:1:0.2:0.3:0.5", "s.txt", "give a vertex id"},
+  {"sample_first_twice", S + " --count 3 --first 4,9,4", "s.txt", "first sample '4' is given twice"},
+  {"sample_first_more_than_count", S + " --count 2 --first 4,9,5", "s.txt", "--first gives 3 samples, more than --count 2"},
+  {"sample_initial_out_of_range", S + " --count 3 --first 4,2775", "s.txt", "first sample '2775'"},
   {"sample_with_mmp", S + " --count 3 --algorithm fwp-mmp", "s.txt", "sampling runs vtp, pvtp, avtp or pavtp"},
   {"sample_ply_output", S + " --count 3", "s.ply", "the samples are written as .txt"},
   {"sample_labels_same_file", S + " --count 3 --labels s.txt", "s.txt", "name the same file 's.txt'"},
@@ -1950,6 +1953,17 @@ TEST_F(Tool, sample_gives_the_farthest_vertices_and_their_radii)
   ASSERT_EQ(labels.size(), 2775u);
   for(std::size_t k = 0; k < from_7.size(); ++k)
     EXPECT_EQ(labels[from_7[k].first], std::to_string(k));
+
+  // several --first: those, in order, each with the radius after all of them; then the farthest
+  const auto from_three = parse_samples(output_of("sample '" + elephant + "' --first 900,100,2000 --count 5", "s.txt"));
+  ASSERT_EQ(from_three.size(), 5u);
+  const std::vector<double> d = distances("distances '" + elephant + "' --source 900,100,2000");
+  const double farthest = *std::max_element(d.begin(), d.end());
+  for(std::size_t k = 0; k < 3; ++k) {
+    EXPECT_EQ(from_three[k].first, std::vector<std::size_t>({900, 100, 2000})[k]);
+    EXPECT_NEAR(from_three[k].second, farthest, 1e-12 * farthest) << "radius after initial sample " << k;
+  }
+  EXPECT_NEAR(d[from_three[3].first], farthest, 1e-12 * farthest);
 }
 
 // ---------------------------------------------------------------------------------------------

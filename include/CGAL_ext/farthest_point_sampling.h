@@ -15,11 +15,14 @@
 #include <CGAL/iterator.h>
 #include <CGAL/tags.h>
 
+#include <algorithm>
+
 #include <chrono>
 #include <cmath>
 #include <cstddef>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace CGAL_ext {
 
@@ -55,6 +58,17 @@ namespace CGAL_ext {
 ///     \cgalParamDescription{the first sample}
 ///     \cgalParamType{`boost::graph_traits<TriangleMesh>::%vertex_descriptor`}
 ///     \cgalParamDefault{the vertex farthest from vertex 0 (from the first vertex in a face, if vertex 0 is in none)}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{initial_samples}
+///     \cgalParamDescription{the first samples, in order, taken as they are (they need not be far apart); the
+///                           sampling goes on from them by farthest points. Their distance field comes from one
+///                           propagation from all of them, and the covering radius reported after each of them
+///                           is the one after all of them. Faster than a long run of farthest points when
+///                           vertices known to be far apart are at hand: the first samples' propagations sweep
+///                           most of the mesh each, one from many samples sweeps it once, a short way from each}
+///     \cgalParamType{a range of `boost::graph_traits<TriangleMesh>::%vertex_descriptor`, distinct, at most
+///                    `number_of_samples`; not with `first_sample`}
+///     \cgalParamDefault{none}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{covering_radius}
 ///     \cgalParamDescription{stop as soon as every vertex is within this distance of a sample (with fewer than
@@ -111,7 +125,9 @@ namespace CGAL_ext {
 /// \return the output iterator past the last sample
 ///
 /// \throws Geodesic_error when `number_of_samples` is 0 or more than the number of vertices, when
-///         `covering_radius` is not positive, when `first_sample` is out of range, when fewer
+///         `covering_radius` is not positive, when `first_sample` is out of range, when
+///         `initial_samples` is empty, repeats a vertex, holds one out of range or more than
+///         `number_of_samples`, or comes with `first_sample`, when fewer
 ///         distinct samples exist than asked (every vertex is a sample or at distance 0 from one
 ///         before the last is taken), for an `algorithm` other than VTP, for `max_distance` or
 ///         `stop_vertices`, and for what `geodesic_distances()` refuses in the mesh
@@ -149,12 +165,29 @@ OutputIterator farthest_point_sampling(const TriangleMesh& tm, std::size_t numbe
   if(number_of_samples > cache.number_of_mesh_vertices)
     throw Geodesic_error("asked for " + std::to_string(number_of_samples) + " samples, but the mesh has only " +
                          std::to_string(cache.number_of_mesh_vertices) + " vertices");
-  int first;
-  if constexpr(!is_default_parameter<NamedParameters, internal_np::first_sample_t>::value) {
-    first = mesh.index(get_parameter(np, internal_np::first_sample));
-    internal::check_vertex_index(cache, first, "first sample");
+  std::vector<int> initial; // the caller's first samples, or the one first sample
+  if constexpr(!is_default_parameter<NamedParameters, internal_np::initial_samples_t>::value) {
+    if constexpr(!is_default_parameter<NamedParameters, internal_np::first_sample_t>::value)
+      throw Geodesic_error("farthest-point sampling takes initial_samples or first_sample, not both");
+    for(const auto& v : get_parameter(np, internal_np::initial_samples)) {
+      initial.push_back(mesh.index(v));
+      internal::check_vertex_index(cache, initial.back(), "initial sample");
+    }
+    if(initial.empty())
+      throw Geodesic_error("initial_samples is empty");
+    if(initial.size() > number_of_samples)
+      throw Geodesic_error(std::to_string(initial.size()) + " initial samples, more than the " +
+                           std::to_string(number_of_samples) + " samples asked for");
+    std::vector<int> sorted = initial;
+    std::sort(sorted.begin(), sorted.end());
+    const auto repeated = std::adjacent_find(sorted.begin(), sorted.end());
+    if(repeated != sorted.end())
+      throw Geodesic_error("initial sample " + std::to_string(cache.mesh_vertex(*repeated)) + " is given twice");
+  } else if constexpr(!is_default_parameter<NamedParameters, internal_np::first_sample_t>::value) {
+    initial.push_back(mesh.index(get_parameter(np, internal_np::first_sample)));
+    internal::check_vertex_index(cache, initial.back(), "first sample");
   } else {
-    first = internal::default_first_sample<parallel>(cache, settings);
+    initial.push_back(internal::default_first_sample<parallel>(cache, settings));
   }
   const double seconds_setup = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
@@ -164,13 +197,18 @@ OutputIterator farthest_point_sampling(const TriangleMesh& tm, std::size_t numbe
   const auto enough = [&](std::size_t count, double covering) {
     return count == number_of_samples || (radius > 0 && mesh.to_mesh_unit(covering) <= radius);
   };
-  for(int next = first;;) {
-    const std::size_t before = sampler.samples().size();
-    sampler.add_samples(next, enough);
-    for(std::size_t i = before; i < sampler.samples().size(); ++i) {
-      *samples++ = mesh.vertex_of(sampler.samples()[i]);
-      *radius_out++ = mesh.to_mesh_unit(sampler.covering_radii()[i]);
+  std::size_t written = 0;
+  const auto write_new_samples = [&] {
+    for(; written < sampler.samples().size(); ++written) {
+      *samples++ = mesh.vertex_of(sampler.samples()[written]);
+      *radius_out++ = mesh.to_mesh_unit(sampler.covering_radii()[written]);
     }
+  };
+  if(initial.size() == 1)
+    sampler.add_samples(initial.front(), enough);
+  else
+    sampler.add_initial_samples(initial);
+  for(write_new_samples();; write_new_samples()) {
     const double covering = sampler.covering_radius();
     if(enough(sampler.samples().size(), covering))
       break;
@@ -178,7 +216,7 @@ OutputIterator farthest_point_sampling(const TriangleMesh& tm, std::size_t numbe
       throw Geodesic_error("asked for " + std::to_string(number_of_samples) + " samples, but after " +
                            std::to_string(sampler.samples().size()) +
                            " every vertex is a sample or at distance 0 from one: no other distinct sample exists");
-    next = sampler.farthest_vertex();
+    sampler.add_samples(sampler.farthest_vertex(), enough);
   }
 
   if constexpr(!is_default_parameter<NamedParameters, internal_np::vertex_distance_map_t>::value)

@@ -28,7 +28,7 @@ struct Geodesic_statistics
   double seconds_solve = 0;          ///< the propagation alone
   // The phases of the batched solvers (parallel, or approximate): 0 for sequential exact VTP.
   double seconds_selection = 0;      ///< batched: taking vertices, resetting the wavefront; PMMP: taking windows
-  double seconds_propagation = 0;    ///< batched: propagating the window lists (PMMP: the windows) of each batch
+  double seconds_propagation = 0;    ///< batched: propagating the window lists (PMMP: the windows) of each batch, with the recording of their windows when they are kept (`Surface_mesh_geodesic_paths`, Voronoi diagrams)
   double seconds_merge = 0;          ///< batched: distance updates and list merges
   // The phases of PMMP (thesis figure 3.16, with seconds_selection and seconds_propagation);
   // sequential MMP and FWP-MMP clip each window as it is made and report seconds_solve only.

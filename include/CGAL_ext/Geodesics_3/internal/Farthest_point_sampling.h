@@ -81,7 +81,7 @@ public:
        m_solver.reached_vertices().size() <= max_vertices_before_batches)
       add_likely_next_samples();
     if(m_batch.size() == 1) {
-      run_one(v, index);
+      run_samples(std::size_t(index), std::size_t(index) + 1);
       return;
     }
     for(std::size_t i = 0; i < m_batch.size(); ++i)
@@ -122,6 +122,28 @@ public:
         twin->copy_field_from(m_solver, solver(i).reached_vertices());
   }
 
+  /// Adds `vertices` (distinct, before any other sample) as the first samples, in order, by one
+  /// propagation from all of them at once where no other sample is yet: the field is then
+  /// theirs, and the runs of the samples after them sweep only what each takes over. The
+  /// covering radius after each of them is the one after all of them.
+  void add_initial_samples(const std::vector<int>& vertices)
+  {
+    const std::size_t first = m_samples.size();
+    m_samples.insert(m_samples.end(), vertices.begin(), vertices.end());
+    // a vertex in no face covers itself; the others run together (a source's number is its
+    // place in the run, so each group of consecutive ones in faces is one run)
+    for(std::size_t i = first; i < m_samples.size();) {
+      std::size_t end = i + 1;
+      if(!is_isolated_point(m_mesh, m_samples[i]))
+        while(end < m_samples.size() && !is_isolated_point(m_mesh, m_samples[end]))
+          ++end;
+      run_samples(i, end);
+      i = end;
+    }
+    m_covering_radii.resize(m_samples.size(), covering_radius());
+    std::fill(m_covering_radii.begin() + long(first), m_covering_radii.end(), covering_radius());
+  }
+
   /// The vertex of the caller's mesh farthest from every sample.
   int farthest_vertex() const { return m_farthest; }
   /// The largest distance of a vertex to its nearest sample.
@@ -153,22 +175,29 @@ private:
   };
   Candidate candidate(double distance, int v) const { return Candidate{distance, v, m_mesh.mesh_vertex(v)}; }
 
+  static Source_point vertex_source(int v)
+  {
+    Source_point s;
+    s.vertex = v;
+    return s;
+  }
   static void start_run(VTP_solver& solver, int v, int index)
   {
     solver.keep_field_for_next_run(index);
-    Source_point s;
-    s.vertex = v;
-    solver.add_source(s);
+    solver.add_source(vertex_source(v));
   }
 
-  // One sample's run (or an isolated sample), the twin solver brought to the same field.
-  void run_one(int v, int index)
+  // The run of samples [first, end) at once (or one isolated sample), the twin solvers brought
+  // to the same field.
+  void run_samples(std::size_t first, std::size_t end)
   {
+    const int v = m_samples[first], index = int(first);
     m_solver.keep_field_for_next_run(index);
     if(is_isolated_point(m_mesh, v)) {
       m_solver.set_isolated_point(v, 0., index);
     } else {
-      start_run(m_solver, v, index);
+      for(std::size_t i = first; i < end; ++i)
+        m_solver.add_source(vertex_source(m_samples[i]));
       m_arena.execute([this] { m_solver.run(); });
       add_statistics(m_solver.statistics());
     }
@@ -245,7 +274,7 @@ private:
   {
     const std::vector<double>& d = m_solver.distances();
     const std::size_t n = m_mesh.number_of_mesh_vertices;
-    if(m_samples.size() == 1 || m_heap.size() > 4 * n) {
+    if(m_covering_radii.empty() || m_heap.size() > 4 * n) {
       m_heap.clear();
       for(std::size_t u = 0; u < n; ++u)
         m_heap.push_back(candidate(d[u], int(u)));

@@ -105,6 +105,8 @@ class Pattern_detector
   typedef std::vector<std::pair<std::size_t, double>> Row;
   typedef std::chrono::steady_clock Clock;
   static constexpr std::size_t none = std::size_t(-1);
+  // the straight-line separation of the sampling's seeds, in sample spacings
+  static constexpr double seed_separation = 2;
 
 public:
   Pattern_detector(const TriangleMesh& tm, VertexPointMap vpm, VertexIndexMap vim, const Pattern_settings& settings)
@@ -494,7 +496,6 @@ private:
       .first;
   }
 
-  // Exact farthest-point samples, the patch's centre first, covering the mesh within the spacing.
   // The scale the stroke gives each sample: its nearest stroke vertex's, the scale going
   // geometrically from 1 at the stroke's start to the end of the range farthest from 1 at its
   // end, by arc length.
@@ -537,6 +538,42 @@ private:
     }
   }
 
+  // Vertices at least `separation` apart in straight line, the patch's centre first, each next
+  // one the farthest in straight line from those before: a geodesic distance is never shorter,
+  // so they are as far apart on the surface.
+  std::vector<vertex_descriptor> straight_line_seeds(double separation) const
+  {
+    const std::size_t n = m_vertex.size();
+    std::vector<std::array<double, 3>> point(n);
+    for(std::size_t v = 0; v < n; ++v) {
+      const auto p = get(m_vpm, m_vertex[v]);
+      point[v] = {double(p.x()), double(p.y()), double(p.z())};
+    }
+    std::vector<double> nearest(n, std::numeric_limits<double>::infinity());
+    std::vector<vertex_descriptor> seeds;
+    for(std::size_t seed = m_center;;) {
+      seeds.push_back(m_vertex[seed]);
+      const std::array<double, 3> c = point[seed];
+      double farthest = 0;
+      for(std::size_t v = 0; v < n; ++v) {
+        const double dx = point[v][0] - c[0], dy = point[v][1] - c[1], dz = point[v][2] - c[2];
+        nearest[v] = std::min(nearest[v], dx * dx + dy * dy + dz * dz);
+        if(nearest[v] > farthest) {
+          farthest = nearest[v];
+          seed = v;
+        }
+      }
+      if(!(farthest >= separation * separation))
+        return seeds;
+    }
+  }
+
+  // Exact farthest-point samples covering the mesh within the spacing, the patch's centre first.
+  // The sampling starts from straight-line seeds a few spacings apart: from them all at once,
+  // one propagation covers the mesh a short way from each, where the first farthest points'
+  // propagations would each sweep much of the mesh. The samples are as far apart and cover as
+  // closely as farthest points from the centre alone (each sample after the seeds is the
+  // farthest), but are not the same ones.
   void sample()
   {
     m_spacing = m_settings.sample_spacing * m_size;
@@ -551,7 +588,9 @@ private:
         report(Step::sampling, double(samples.size()) / expected);
       }),
       solver_parameters()
-        .first_sample(m_vertex[m_center]).covering_radius(m_spacing).vertex_source_map(CGAL::make_property_map(m_cell)));
+        .initial_samples(straight_line_seeds(seed_separation * m_spacing))
+        .covering_radius(m_spacing)
+        .vertex_source_map(CGAL::make_property_map(m_cell)));
     m_sample_vertex.clear();
     m_sample_of_vertex.assign(m_vertex.size(), none);
     for(vertex_descriptor v : samples) {
@@ -753,13 +792,17 @@ private:
       const std::size_t seed = seeds[next_seed++];
       const std::size_t found_before = m_instances.size();
       search(seed, 1.0);
-      // A search looks at the samples within the search radius (at least 4 patch radii) of its
-      // seed: an instance centred within a patch radius of a seed that found nothing lies in
-      // that seed's neighbourhood, so the look-alikes there are not searched again (on a
-      // curved background, such as a cylinder's, most of the surface looks like the centre).
-      if(m_instances.size() == found_before)
-        for(std::size_t q : neighbourhood(seed, m_radius))
+      // A search from a seed looks at the samples within (search radius x s + 1) R of it, s the
+      // largest scale (at least 1): an instance of radius at most s R centred within (search
+      // radius x s + 1 - s) R of a seed that found nothing lies in that seed's neighbourhood,
+      // so the look-alikes there (at most 2 R away, as the defaults give) are not searched again (on a curved
+      // background, such as a cylinder's, most of the surface looks like the centre).
+      if(m_instances.size() == found_before) {
+        const double s = std::max(1.0, m_scales.back());
+        const double ruled_out = std::min(2.0, m_settings.search_radius * s + 1 - s) * m_radius;
+        for(std::size_t q : neighbourhood(seed, ruled_out))
           near_fruitless_seed[q] = true;
+      }
     }
   }
 

@@ -35,6 +35,8 @@ struct Source_point
 /// clipping's ties).
 inline std::vector<bool> repeated_sources(const std::vector<Source_point>& sources)
 {
+  if(sources.size() < 2) // the single-source runs of sampling and of matrix rows
+    return std::vector<bool>(sources.size(), false);
   std::vector<std::size_t> order(sources.size());
   for(std::size_t i = 0; i < order.size(); ++i)
     order[i] = i;
@@ -50,8 +52,6 @@ inline std::vector<bool> repeated_sources(const std::vector<Source_point>& sourc
   return repeated;
 }
 
-/// Throws when there is no source to start from.
-/// Throws when there is no source, or when every source is a vertex in no face.
 /// Whether vertex v (and every vertex glued to it) is in no face: no path leaves it.
 inline bool is_isolated_point(const Mesh_cache& m, int v)
 {
@@ -60,6 +60,7 @@ inline bool is_isolated_point(const Mesh_cache& m, int v)
   return !any_face;
 }
 
+/// Throws when there is no source, or when every source is a vertex in no face.
 inline void check_has_sources(const Mesh_cache& m, const std::vector<Source_point>& sources)
 {
   if(sources.empty())
