@@ -16,7 +16,6 @@
 #include <CGAL/tags.h>
 
 #include <algorithm>
-
 #include <chrono>
 #include <cmath>
 #include <cstddef>

@@ -140,8 +140,8 @@ public:
       run_samples(i, end);
       i = end;
     }
+    m_covering_radii.resize(first); // one a run above
     m_covering_radii.resize(m_samples.size(), covering_radius());
-    std::fill(m_covering_radii.begin() + long(first), m_covering_radii.end(), covering_radius());
   }
 
   /// The vertex of the caller's mesh farthest from every sample.
