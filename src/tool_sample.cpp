@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <set>
 #include <sstream>
 
 namespace geodesic_tool {
@@ -77,13 +78,13 @@ int run_sample(const Sample_options& options)
   const Output_format labels_format = options.labels.empty() ? Output_format::txt : output_format(options.labels);
   check_distinct_outputs({{"--output", options.output}, {"--labels", options.labels}});
   std::vector<Surface_point> first;
+  std::set<std::size_t> first_vertices;
   for(const std::string& text : options.first) {
     first.push_back(parse_surface_point(text, "first sample"));
     if(!first.back().vertex)
       throw Tool_error("first sample '" + text + "': give a vertex id");
-    for(std::size_t k = 0; k + 1 < first.size(); ++k)
-      if(*first[k].vertex == *first.back().vertex)
-        throw Tool_error("first sample '" + text + "' is given twice");
+    if(!first_vertices.insert(*first.back().vertex).second)
+      throw Tool_error("first sample '" + text + "' is given twice");
   }
   if(options.count && first.size() > std::size_t(*options.count))
     throw Tool_error("--first gives " + std::to_string(first.size()) + " samples, more than --count " +
