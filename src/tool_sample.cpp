@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -94,8 +95,14 @@ int run_sample(const Sample_options& options)
   const Mesh_file file = read_mesh_file(options.mesh);
   const double seconds_read = read_watch.seconds();
   const std::size_t points = file.soup.points.size();
-  for(const Surface_point& point : first)
+  std::map<std::size_t, std::string> first_of_vertex; // two points merged into one vertex are one sample
+  for(const Surface_point& point : first) {
     check_surface_point_range(point, points, file.soup.polygons.size(), "first sample");
+    const auto [at, added] = first_of_vertex.emplace(std::size_t(file.vertex_of_point[*point.vertex]), point.text);
+    if(!added)
+      throw Tool_error("first samples '" + at->second + "' and '" + point.text +
+                       "' are one vertex of the mesh (the file repeats the point)");
+  }
   Sampling_request request;
   request.count = options.count ? std::size_t(*options.count) : points;
   if(request.count > points)

@@ -249,8 +249,6 @@ TEST(Farthest_point_sampling, initial_samples_then_farthest_points)
   for(Vertex v : initial)
     single += sample(m, 1, CGAL_ext::parameters::first_sample(v)).statistics.windows_created;
   EXPECT_LT(first_three.statistics.windows_created, single);
-  // as many initial samples as asked: just those
-  EXPECT_EQ(sample(m, 3, CGAL_ext::parameters::initial_samples(initial)).samples, initial);
 
   const Sampling one = sample<CGAL::Parallel_tag>(m, 60, number_of_threads(1).initial_samples(initial));
   for(int threads : {2, 4}) {
@@ -260,8 +258,9 @@ TEST(Farthest_point_sampling, initial_samples_then_farthest_points)
     EXPECT_EQ(many.distances, one.distances) << threads << " threads";
     EXPECT_EQ(many.labels, one.labels) << threads << " threads";
   }
-  const Sampling sequential = sample(m, 60, CGAL_ext::parameters::initial_samples(initial));
-  EXPECT_EQ(one.samples, sequential.samples);
+  // VTP's distances equal PVTP's to round-off: the first samples, before near ties
+  const Sampling sequential = sample(m, 10, CGAL_ext::parameters::initial_samples(initial));
+  EXPECT_EQ(std::vector<Vertex>(one.samples.begin(), one.samples.begin() + 10), sequential.samples);
 }
 
 // Several components each get a sample before any gets a second; a vertex in no face is a
@@ -296,17 +295,17 @@ TEST(Farthest_point_sampling, every_component_is_sampled_first)
   EXPECT_EQ(s.samples[3], Vertex(24));
   EXPECT_NEAR(s.radii[3], std::sqrt(2.), 1e-12);
 
-  // initial samples with the isolated vertex between two of the first square: each its own
-  // label, the other square sampled next
-  const Sampling from = sample(m, 4, CGAL_ext::parameters::initial_samples(std::vector<Vertex>{Vertex(0), isolated, Vertex(24)}));
+  // initial samples, the isolated vertex first, then two corners of the first square run
+  // together from label 1 on: each its own label, the other square sampled next
+  const Sampling from = sample(m, 4, CGAL_ext::parameters::initial_samples(std::vector<Vertex>{isolated, Vertex(0), Vertex(24)}));
   ASSERT_EQ(from.samples.size(), 4u);
   EXPECT_EQ(from.samples[3], Vertex(25));
   EXPECT_EQ(from.radii[0], inf);
   EXPECT_EQ(from.radii[2], inf);
-  EXPECT_EQ(from.labels[0], 0);
-  EXPECT_EQ(from.labels[isolated.idx()], 1);
+  EXPECT_EQ(from.labels[isolated.idx()], 0);
+  EXPECT_EQ(from.labels[0], 1);
   EXPECT_EQ(from.labels[24], 2);
-  EXPECT_EQ(from.labels[1], 0);  // (0.25, 0), nearer vertex 0
+  EXPECT_EQ(from.labels[1], 1);  // (0.25, 0), nearer vertex 0
   EXPECT_EQ(from.labels[23], 2); // (0.75, 1), nearer vertex 24
   EXPECT_NEAR(from.distances[12], std::sqrt(0.5), 1e-12); // the centre, as far from both corners
 }
@@ -342,6 +341,13 @@ TEST(Farthest_point_sampling, bad_requests_are_named)
   const Mesh needle = mesh_from_soup(
     {Point(0, 0, 0), Point(1, 0, 0), Point(1, 1, 0), Point(0, 1, 0), Point(1, 1, 0)}, {{0, 1, 2}, {0, 2, 3}, {1, 4, 2}});
   std::vector<Vertex> four;
+  EXPECT_TRUE(throws_geodesic_error(
+    [&] {
+      CGAL_ext::farthest_point_sampling(needle, 3, std::back_inserter(four),
+                                        CGAL_ext::parameters::initial_samples(std::vector<Vertex>{Vertex(2), Vertex(4)}));
+    },
+    {"initial samples 2 and 4", "one point"}));
+  four.clear();
   CGAL_ext::farthest_point_sampling(needle, 4, std::back_inserter(four));
   EXPECT_EQ(four.size(), 4u);
   EXPECT_TRUE(throws_geodesic_error(

@@ -1653,6 +1653,8 @@ const std::vector<std::pair<std::string, std::string>> bad_files = {
   {"two.off", "OFF\n6 2 0\n" + triangle_points + "10 0 0\n11 0 0\n10 1 0\n3 0 1 2\n3 3 4 5\n"},
   // a unit square and point 4 = point 2, joined by a zero-length edge: 5 vertices, 4 distinct points
   {"needle.off", "OFF\n5 3 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n1 1 0\n3 0 1 2\n3 0 2 3\n3 1 4 2\n"},
+  // a soup of two triangles: points 3 and 4 repeat points 0 and 2, and are merged with them
+  {"soup.off", "OFF\n6 2 0\n0 0 0\n1 0 0\n1 1 0\n0 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 3 4 5\n"},
 };
 
 const std::string E = "distances '" + elephant + "'";
@@ -1780,6 +1782,9 @@ const Bad_case bad_cases[] = {
   {"sample_first_twice", S + " --count 3 --first 4,9,4", "s.txt", "first sample '4' is given twice"},
   {"sample_first_more_than_count", S + " --count 2 --first 4,9,5", "s.txt", "--first gives 3 samples, more than --count 2"},
   {"sample_initial_out_of_range", S + " --count 3 --first 4,2775", "s.txt", "first sample '2775'"},
+  {"sample_initial_one_point", "sample needle.off --count 3 --first 2,4", "s.txt", "2 and 4"},
+  {"sample_initial_merged_points", "sample soup.off --count 3 --first 0,3", "s.txt",
+   "first samples '0' and '3' are one vertex of the mesh"},
   {"sample_with_mmp", S + " --count 3 --algorithm fwp-mmp", "s.txt", "sampling runs vtp, pvtp, avtp or pavtp"},
   {"sample_ply_output", S + " --count 3", "s.ply", "the samples are written as .txt"},
   {"sample_labels_same_file", S + " --count 3 --labels s.txt", "s.txt", "name the same file 's.txt'"},

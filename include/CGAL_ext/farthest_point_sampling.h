@@ -27,9 +27,10 @@ namespace CGAL_ext {
 
 /// \ingroup PkgGeodesics3Ref
 /// samples the vertices of `tm` by farthest points, with exact geodesic distances: each sample
-/// after the first is the vertex farthest from all the samples before it (the lowest index of
-/// those at the largest distance). Vertices of a component with no sample yet are at
-/// `+infinity`, so every component gets a sample before any gets a second one.
+/// after the first (after the `initial_samples`, when given) is the vertex farthest from all the
+/// samples before it (the lowest index of those at the largest distance). Vertices of a
+/// component with no sample yet are at `+infinity`, so every component gets a sample before any
+/// gets a second one (among the samples after the initial ones).
 ///
 /// The sampling is incremental: the propagation of each new sample starts from the distance
 /// field of the samples before it and prunes every window that cannot lower a vertex's
@@ -71,13 +72,14 @@ namespace CGAL_ext {
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{covering_radius}
 ///     \cgalParamDescription{stop as soon as every vertex is within this distance of a sample (with fewer than
-///                           `number_of_samples` samples, then)}
+///                           `number_of_samples` samples, then; the initial samples are all taken)}
 ///     \cgalParamType{`double`, positive}
 ///     \cgalParamDefault{none: `number_of_samples` samples}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{covering_radius_output_iterator}
 ///     \cgalParamDescription{receives, after each sample, the covering radius: the largest distance from a vertex to its
-///                           nearest sample so far (non-increasing; `+infinity` while a component has no sample)}
+///                           nearest sample so far (non-increasing; `+infinity` while a component has no sample;
+///                           for each initial sample, the one after all of them)}
 ///     \cgalParamType{an output iterator accepting `double`}
 ///     \cgalParamDefault{none}
 ///   \cgalParamNEnd
@@ -177,11 +179,19 @@ OutputIterator farthest_point_sampling(const TriangleMesh& tm, std::size_t numbe
     if(initial.size() > number_of_samples)
       throw Geodesic_error(std::to_string(initial.size()) + " initial samples, more than the " +
                            std::to_string(number_of_samples) + " samples asked for");
-    std::vector<int> sorted = initial;
-    std::sort(sorted.begin(), sorted.end());
-    const auto repeated = std::adjacent_find(sorted.begin(), sorted.end());
-    if(repeated != sorted.end())
-      throw Geodesic_error("initial sample " + std::to_string(cache.mesh_vertex(*repeated)) + " is given twice");
+    // distinct points: a vertex given twice, or two vertices glued at one point, would leave
+    // the later sample an empty cell
+    std::vector<int> sample_at(cache.number_of_vertices, -1);
+    for(std::size_t i = 0; i < initial.size(); ++i) {
+      const int earlier = sample_at[std::size_t(initial[i])];
+      if(earlier >= 0) {
+        const int a = cache.mesh_vertex(initial[std::size_t(earlier)]), b = cache.mesh_vertex(initial[i]);
+        throw Geodesic_error(a == b ? "initial sample " + std::to_string(a) + " is given twice"
+                                    : "initial samples " + std::to_string(a) + " and " + std::to_string(b) +
+                                        " are one point of the surface (glued)");
+      }
+      cache.for_each_copy_of_point(initial[i], [&](int u) { sample_at[std::size_t(u)] = int(i); });
+    }
   } else if constexpr(!is_default_parameter<NamedParameters, internal_np::first_sample_t>::value) {
     initial.push_back(mesh.index(get_parameter(np, internal_np::first_sample)));
     internal::check_vertex_index(cache, initial.back(), "first sample");

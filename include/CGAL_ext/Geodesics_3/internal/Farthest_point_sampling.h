@@ -148,7 +148,7 @@ public:
   int farthest_vertex() const { return m_farthest; }
   /// The largest distance of a vertex to its nearest sample.
   double covering_radius() const { return m_solver.distances()[std::size_t(m_farthest)]; }
-  /// The covering radius after each sample.
+  /// The covering radius after each sample (after all the initial samples, for each of them).
   const std::vector<double>& covering_radii() const { return m_covering_radii; }
 
   const std::vector<int>& samples() const { return m_samples; }

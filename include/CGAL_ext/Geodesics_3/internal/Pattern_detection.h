@@ -795,12 +795,13 @@ private:
       // A search from a seed looks at the samples within (search radius x s + 1) R of it, s the
       // largest scale (at least 1): an instance of radius at most s R centred within (search
       // radius x s + 1 - s) R of a seed that found nothing lies in that seed's neighbourhood,
-      // so the look-alikes there (at most 2 R away, as the defaults give) are not searched
-      // again (on a curved background, such as a cylinder's, most of the surface looks like
-      // the centre).
+      // so the look-alikes within (search radius x s - s) R, a patch radius to spare (the
+      // neighbourhood's paths through samples are longer than geodesics), and at most 2 R (as
+      // the defaults give), are not searched again (on a curved background, such as a
+      // cylinder's, most of the surface looks like the centre).
       if(m_instances.size() == found_before) {
         const double s = std::max(1.0, m_scales.back());
-        const double ruled_out = std::min(2.0, m_settings.search_radius * s + 1 - s) * m_radius;
+        const double ruled_out = std::clamp(m_settings.search_radius * s - s, 0.0, 2.0) * m_radius;
         for(std::size_t q : neighbourhood(seed, ruled_out))
           near_fruitless_seed[q] = true;
       }
