@@ -349,7 +349,7 @@ Sampling_result compute_samples(const Mesh_file& file, const Sampling_request& r
       CGAL_ext::farthest_point_sampling<decltype(tag)>(mesh, request.count, on_sample, p);
     });
   };
-  // `first_sample` (or `initial_samples`) and `covering_radius` are present or absent
+  // `initial_samples` (one of them: the first sample) and `covering_radius` are present or absent
   const auto with_radius = [&](const auto& p) {
     if(request.radius > 0)
       sample(p.covering_radius(request.radius));
@@ -359,10 +359,8 @@ Sampling_result compute_samples(const Mesh_file& file, const Sampling_request& r
   std::vector<Vertex_index> first;
   for(std::size_t point : request.first)
     first.push_back(file.vertex_of_point[point]);
-  if(first.size() > 1)
+  if(!first.empty())
     with_radius(np.initial_samples(first));
-  else if(first.size() == 1)
-    with_radius(np.first_sample(first.front()));
   else
     with_radius(np);
   progress.clear();

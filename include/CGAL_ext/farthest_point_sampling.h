@@ -213,10 +213,7 @@ OutputIterator farthest_point_sampling(const TriangleMesh& tm, std::size_t numbe
       *radius_out++ = mesh.to_mesh_unit(sampler.covering_radii()[written]);
     }
   };
-  if(initial.size() == 1)
-    sampler.add_samples(initial.front(), enough);
-  else
-    sampler.add_initial_samples(initial);
+  sampler.add_initial_samples(initial);
   for(write_new_samples();; write_new_samples()) {
     const double covering = sampler.covering_radius();
     if(enough(sampler.samples().size(), covering))

@@ -122,10 +122,10 @@ public:
         twin->copy_field_from(m_solver, solver(i).reached_vertices());
   }
 
-  /// Adds `vertices` (distinct, before any other sample) as the first samples, in order, by one
-  /// propagation from all of them at once where no other sample is yet: the field is then
-  /// theirs, and the runs of the samples after them sweep only what each takes over. The
-  /// covering radius after each of them is the one after all of them.
+  /// Adds `vertices` (distinct points, before any other sample) as the first samples, in order,
+  /// by one propagation from all of them at once: the field is then theirs, and the runs of the
+  /// samples after them sweep only what each takes over. The covering radius after each of them
+  /// is the one after all of them. One vertex is one sample's run, as `add_sample` makes it.
   void add_initial_samples(const std::vector<int>& vertices)
   {
     const std::size_t first = m_samples.size();
