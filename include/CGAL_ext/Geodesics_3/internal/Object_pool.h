@@ -178,6 +178,27 @@ public:
     }
   }
 
+  /// The same for several chains at once, `cursors[0..count)` their first objects: one link of
+  /// each in turn, so that the reads of the chains' links overlap too (a chain that another
+  /// thread wrote is a chain of cache misses). The cursors are left at nil.
+  void prefetch_chains(std::uint32_t* cursors, std::size_t count) const
+  {
+    for(bool any = true; any;) {
+      any = false;
+      for(std::size_t k = 0; k < count; ++k) {
+        const std::uint32_t i = cursors[k];
+        if(i == nil)
+          continue;
+        T* block = block_of(i);
+#if defined(__GNUC__)
+        __builtin_prefetch(block + place_of(i));
+#endif
+        cursors[k] = links_of(block)[place_of(i)];
+        any = true;
+      }
+    }
+  }
+
   /// An object of the slot set to `value`; returns it, and its index in `index`. Its link is
   /// left as it was. (Inlined: GCC leaves it out of line in VTP's `propagate`.)
   CGAL_EXT_ALWAYS_INLINE T* allocate(std::size_t slot, const T& value, std::uint32_t& index)

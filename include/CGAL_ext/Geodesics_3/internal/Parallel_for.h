@@ -31,13 +31,14 @@ inline std::size_t this_thread_slot() { return 0; }
 inline std::size_t arena_concurrency() { return 1; }
 #endif
 
-/// Calls `f(i, slot)` for every i in [0, n), `slot` being the calling thread's index in the
-/// arena. When `parallel`, the arena has more than one thread and n is more than one chunk, the
-/// indices go in chunks of `grain` (a `simple_partitioner`: chunks of exactly that size at most)
-/// to the arena's threads; otherwise they run here, in order. Callers write per index, or per
-/// slot with ranges kept per index, so which thread runs an index never changes a result.
+/// Calls `f(begin, end, slot)` for ranges [begin, end) that together make [0, n), once each,
+/// `slot` being the calling thread's index in the arena. When `parallel`, the arena has more
+/// than one thread and n is more than one chunk, the ranges are chunks of `grain` indices (a
+/// `simple_partitioner`: chunks of exactly that size at most) run by the arena's threads;
+/// otherwise [0, n) runs here. Callers write per index, or per slot with ranges kept per index,
+/// so which thread runs an index never changes a result.
 template <class Function>
-void for_each_index(bool parallel, std::size_t n, std::size_t grain, const Function& f)
+void for_each_chunk(bool parallel, std::size_t n, std::size_t grain, const Function& f)
 {
   grain = std::max<std::size_t>(grain, 1);
 #ifdef CGAL_LINKED_WITH_TBB
@@ -54,9 +55,7 @@ void for_each_index(bool parallel, std::size_t n, std::size_t grain, const Funct
         [&f, &start, &done](const tbb::blocked_range<std::size_t>& r) {
           sanitizer_acquire(&start);
           const Sanitizer_on_exit end(sanitizer_release, &done);
-          const std::size_t slot = this_thread_slot();
-          for(std::size_t i = r.begin(); i != r.end(); ++i)
-            f(i, slot);
+          f(r.begin(), r.end(), this_thread_slot());
         },
         tbb::simple_partitioner());
     }
@@ -65,9 +64,19 @@ void for_each_index(bool parallel, std::size_t n, std::size_t grain, const Funct
 #endif
   // In order, here; slot 0 when sequential (the only slot of sequential per-thread storage,
   // whichever arena thread the caller is), the caller's slot when the arena has one thread.
-  const std::size_t slot = parallel ? this_thread_slot() : 0;
-  for(std::size_t i = 0; i < n; ++i)
-    f(i, slot);
+  if(n > 0)
+    f(std::size_t(0), n, parallel ? this_thread_slot() : 0);
+}
+
+/// Calls `f(i, slot)` for every i in [0, n), in the chunks of `for_each_chunk`, in order within
+/// a chunk.
+template <class Function>
+void for_each_index(bool parallel, std::size_t n, std::size_t grain, const Function& f)
+{
+  for_each_chunk(parallel, n, grain, [&f](std::size_t begin, std::size_t end, std::size_t slot) {
+    for(std::size_t i = begin; i != end; ++i)
+      f(i, slot);
+  });
 }
 
 } // namespace internal

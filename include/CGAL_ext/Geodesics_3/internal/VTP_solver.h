@@ -672,6 +672,9 @@ private:
       List_task& task = m_task_one;
       for(std::size_t i = 0; i < m_scheduled_lists.size(); ++i) {
         detach(m_scheduled_lists[i], task);
+        // The links first, which stay in cache, to fetch the windows ahead: they are far apart
+        // in the pool, and their reads then overlap instead of waiting for each other.
+        m_pool.prefetch_chain(task.input);
         propagate(task, m_main_slot);
         merge(task);
         note_live_windows(m_pool);
@@ -708,8 +711,20 @@ private:
   void propagate_tasks(std::size_t n)
   {
     // Each task reads shared state that no task writes, and writes only itself and its
-    // thread's pool slot.
-    for_each_index(m_parallel, n, list_grain, [this](std::size_t i, std::size_t slot) { propagate(m_tasks[i], slot); });
+    // thread's pool slot. The windows of `list_grain` tasks are fetched at once, their chains
+    // walked side by side: the chains of a round were written by any thread, and one chain's
+    // links are a chain of cache misses when another core wrote them.
+    for_each_chunk(m_parallel, n, list_grain, [this](std::size_t begin, std::size_t end, std::size_t slot) {
+      std::uint32_t cursors[list_grain];
+      for(std::size_t first = begin; first < end; first += list_grain) {
+        const std::size_t last = std::min(end, first + list_grain);
+        for(std::size_t i = first; i < last; ++i)
+          cursors[i - first] = m_tasks[i].input;
+        m_pool.prefetch_chains(cursors, last - first);
+        for(std::size_t i = first; i < last; ++i)
+          propagate(m_tasks[i], slot);
+      }
+    });
   }
 
   // The round's propagated lists to the recorder, in parallel by edge: the task of the lower
@@ -788,9 +803,7 @@ private:
     const Halfedge_frame f = m_mesh.frame(h);
     const double d_from = m_distance[m_mesh.source(h)];
     const double d_to = m_distance[m_mesh.target(h)];
-    // The links first, which stay in cache, to fetch the windows ahead: they are far apart in
-    // the pool, and their reads then overlap instead of waiting for each other.
-    m_pool.prefetch_chain(task.input);
+    // (the caller has asked for the windows: `prefetch_chain`)
     m_pool.take_chain(slot, task.input, [&](Window& listed) CGAL_EXT_ALWAYS_INLINE {
       if(keep_window(listed, h, d_from, d_to))
         windows.push_back(listed);

@@ -419,8 +419,10 @@ inline bool make_child(const Window_geometry& w, double lo, double hi, const Chi
     const double dx = x - w.sx, dy = -w.sy;
     const double num = rx * dy - ry * dx;
     const double den = e.ux * dy - e.uy * dx;
-    double t = den != 0 ? num / den : (num > 0 ? e.length : 0.);
-    return std::min(std::max(t, 0.), e.length);
+    // clamped to [0, length]; where den is 0 the ray is parallel to the edge: num / den is
+    // +-infinity, clamped to an end, or NaN (num is 0 too), taken as 0
+    const double t = num / den;
+    return t > 0 ? (t < e.length ? t : e.length) : 0.;
   };
   const double c0 = hit(lo), c1 = hit(hi);
   if(!(c1 - c0 > min_length))
