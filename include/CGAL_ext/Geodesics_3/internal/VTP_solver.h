@@ -711,8 +711,8 @@ private:
   void propagate_tasks(std::size_t n)
   {
     // Each task reads shared state that no task writes, and writes only itself and its
-    // thread's pool slot. The windows of `list_grain` tasks are fetched at once, their chains
-    // walked side by side: the chains of a round were written by any thread, and one chain's
+    // thread's pool slot. The windows of the tasks of a chunk (at most `list_grain`) are fetched
+    // at once, their chains walked side by side: the chains of a round were written by any thread, and one chain's
     // links are a chain of cache misses when another core wrote them.
     for_each_chunk(m_parallel, n, list_grain, [this](std::size_t begin, std::size_t end, std::size_t slot) {
       std::uint32_t cursors[list_grain];
@@ -803,7 +803,7 @@ private:
     const Halfedge_frame f = m_mesh.frame(h);
     const double d_from = m_distance[m_mesh.source(h)];
     const double d_to = m_distance[m_mesh.target(h)];
-    // (the caller has asked for the windows: `prefetch_chain`)
+    // (the caller has asked for the windows: `prefetch_chain` or `prefetch_chains`)
     m_pool.take_chain(slot, task.input, [&](Window& listed) CGAL_EXT_ALWAYS_INLINE {
       if(keep_window(listed, h, d_from, d_to))
         windows.push_back(listed);

@@ -420,7 +420,8 @@ inline bool make_child(const Window_geometry& w, double lo, double hi, const Chi
     const double num = rx * dy - ry * dx;
     const double den = e.ux * dy - e.uy * dx;
     // clamped to [0, length]; where den is 0 the ray is parallel to the edge: num / den is
-    // +-infinity, clamped to an end, or NaN (num is 0 too), taken as 0
+    // +-infinity, clamped to the end the signs of num and of den's zero give, or NaN (num is
+    // 0 too), taken as 0
     const double t = num / den;
     return t > 0 ? (t < e.length ? t : e.length) : 0.;
   };
