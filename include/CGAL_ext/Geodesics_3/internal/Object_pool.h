@@ -169,13 +169,8 @@ public:
   /// their links (a hint: nothing else changes).
   void prefetch_chain(std::uint32_t i) const
   {
-    while(i != nil) {
-      T* block = block_of(i);
-#if defined(__GNUC__)
-      __builtin_prefetch(block + place_of(i));
-#endif
-      i = links_of(block)[place_of(i)];
-    }
+    while(i != nil)
+      i = prefetch_and_follow(i);
   }
 
   /// The same for several chains at once, `cursors[0..count)` their first objects: one link of
@@ -186,14 +181,9 @@ public:
     for(bool any = true; any;) {
       any = false;
       for(std::size_t k = 0; k < count; ++k) {
-        const std::uint32_t i = cursors[k];
-        if(i == nil)
+        if(cursors[k] == nil)
           continue;
-        T* block = block_of(i);
-#if defined(__GNUC__)
-        __builtin_prefetch(block + place_of(i));
-#endif
-        cursors[k] = links_of(block)[place_of(i)];
+        cursors[k] = prefetch_and_follow(cursors[k]);
         any = true;
       }
     }
@@ -248,6 +238,15 @@ public:
 
 private:
   T* block_of(std::uint32_t i) const { return m_blocks[i >> block_bits]; }
+  // A step of the prefetching walks: asks for object i, returns its link.
+  std::uint32_t prefetch_and_follow(std::uint32_t i) const
+  {
+    T* block = block_of(i);
+#if defined(__GNUC__)
+    __builtin_prefetch(block + place_of(i));
+#endif
+    return links_of(block)[place_of(i)];
+  }
   static std::uint32_t place_of(std::uint32_t i) { return i & (block_size - 1); }
   static std::uint32_t* links_of(T* block) { return reinterpret_cast<std::uint32_t*>(block + block_size); }
 

@@ -33,11 +33,11 @@ inline std::size_t arena_concurrency() { return 1; }
 
 /// Calls `f(begin, end, slot)` for ranges [begin, end) that together make [0, n), once each,
 /// `slot` being the calling thread's index in the arena. When `parallel`, the arena has more
-/// than one thread and n is more than one chunk, the ranges are chunks of at most `grain` indices
-/// (a `simple_partitioner` halves the range while it is longer: more than half of `grain` each)
-/// run by the arena's threads;
-/// otherwise [0, n) runs here. Callers write per index, or per slot with ranges kept per index,
-/// so which thread runs an index never changes a result.
+/// than one thread and n is more than one chunk, the ranges are chunks of at most `grain`
+/// indices (a `simple_partitioner` halves the range while it is longer: more than half of
+/// `grain` each) run by the arena's threads; otherwise [0, n) runs here. Callers write per
+/// index, or per slot with ranges kept per index, so which thread runs an index never changes
+/// a result.
 template <class Function>
 void for_each_chunk(bool parallel, std::size_t n, std::size_t grain, const Function& f)
 {

@@ -711,9 +711,9 @@ private:
   void propagate_tasks(std::size_t n)
   {
     // Each task reads shared state that no task writes, and writes only itself and its
-    // thread's pool slot. The windows of the tasks of a chunk (at most `list_grain`) are fetched
-    // at once, their chains walked side by side: the chains of a round were written by any thread, and one chain's
-    // links are a chain of cache misses when another core wrote them.
+    // thread's pool slot. The windows of the tasks of a chunk (at most `list_grain`) are
+    // fetched at once, their chains walked side by side: the chains of a round were written by
+    // any thread, and one chain's links are a chain of cache misses when another core wrote them.
     for_each_chunk(m_parallel, n, list_grain, [this](std::size_t begin, std::size_t end, std::size_t slot) {
       std::uint32_t cursors[list_grain];
       for(std::size_t first = begin; first < end; first += list_grain) {
