@@ -386,8 +386,8 @@ TEST(WindowToolkit, OverlapPiecesGoToTheShorterWindow)
 }
 
 // VTP's window store: objects found again by index across blocks, 64-byte aligned, links kept
-// apart from them, freed objects given again before new ones, the live count and the bytes of
-// the blocks.
+// apart from them, a freed chain given again (in its order) before new objects, the live count
+// and the bytes of the blocks.
 TEST(WindowToolkit, IndexedPoolKeepsObjectsByIndex)
 {
   namespace gi = CGAL_ext::Geodesics_3::internal;
@@ -422,7 +422,7 @@ TEST(WindowToolkit, IndexedPoolKeepsObjectsByIndex)
     gi::Window w;
     w.source = -1;
     pool.allocate(0, w, again);
-    ASSERT_EQ(again % 2, 0u) << "a freed index is given again first";
+    ASSERT_EQ(again, index[2 * i]) << "a freed chain is given again first, in its order";
   }
   EXPECT_EQ(pool.live(), n);
   EXPECT_EQ(pool.bytes(), 4 * Pool::block_size * (sizeof(gi::Window) + sizeof(std::uint32_t)));

@@ -210,22 +210,29 @@ public:
     return p;
   }
 
-  /// Calls `visit(object)` for the objects from `i` on along their links, and frees each one
-  /// (into the slot) once visited.
+  /// Calls `visit(object)` for the objects from `i` on along their links, then frees them all
+  /// (into the slot; `visit` must not use the slot). The chain joins the free list as it is
+  /// linked: only its last link is written.
   template <class Visit>
   CGAL_EXT_ALWAYS_INLINE void take_chain(std::size_t slot, std::uint32_t i, Visit visit)
   {
-    Slot& s = m_slots[slot];
-    while(i != nil) {
+    if(i == nil)
+      return;
+    const std::uint32_t first = i;
+    std::uint32_t* last_link;
+    std::ptrdiff_t count = 0;
+    do {
       T* block = block_of(i);
-      std::uint32_t& link_of_i = links_of(block)[place_of(i)];
-      const std::uint32_t next = link_of_i;
+      last_link = &links_of(block)[place_of(i)];
+      const std::uint32_t next = *last_link;
       visit(block[place_of(i)]);
-      link_of_i = s.free;
-      s.free = i;
-      --s.live;
+      ++count;
       i = next;
-    }
+    } while(i != nil);
+    Slot& s = m_slots[slot];
+    *last_link = s.free;
+    s.free = first;
+    s.live -= count;
   }
 
   /// Frees the objects from `i` on along their links.

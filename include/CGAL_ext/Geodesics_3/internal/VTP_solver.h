@@ -820,6 +820,8 @@ private:
     double best = infinity(), split = 0;
     const Window* best_window = nullptr;
     for(const Window& w : windows) {
+      if(!(w.b1 > w.b0))
+        continue; // clipped away (an empty window makes no child either)
       double p;
       const double d = distance_to_apex(w, apex_crossing(w, f.apex_x, f.apex_y), f.apex_x, f.apex_y, p);
       if(d < best) {
@@ -853,7 +855,10 @@ private:
   // Out of line: inlined, its copy made GCC leave the list's sort out of line (+1 % instructions).
   CGAL_EXT_NOINLINE static void keep_for_record(List_task& task, const std::vector<Window>& windows)
   {
-    task.propagated.assign(windows.begin(), windows.end());
+    task.propagated.clear();
+    for(const Window& w : windows)
+      if(w.b1 > w.b0) // not clipped away
+        task.propagated.push_back(w);
   }
 
   // Applies a propagated task: updates the apex, adds the children to their lists.
@@ -894,7 +899,9 @@ private:
 
   // Rule 2: windows of the list (sorted by where they start) are clipped against each other
   // where they overlap by at least `min_overlap` (min_clipped_overlap_ratio): leaving two
-  // windows unclipped is safe, since a rule only ever drops rays.
+  // windows unclipped is safe, since a rule only ever drops rays. A window clipped away is left
+  // in place, empty (b1 == b0): it makes no child, and the loops after skip it, which costs less
+  // than closing the gaps.
   static void prune_pairs(std::vector<Window>& windows, double min_overlap)
   {
     if(windows.size() < 2)
@@ -923,8 +930,6 @@ private:
         }
       }
     }
-    windows.erase(std::remove_if(windows.begin(), windows.end(), [](const Window& w) { return !(w.b1 > w.b0); }),
-                  windows.end());
   }
 
   // The order of a list's windows: by where they start.
