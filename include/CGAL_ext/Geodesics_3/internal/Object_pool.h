@@ -211,8 +211,8 @@ public:
   }
 
   /// Calls `visit(object)` for the objects from `i` on along their links, then frees them all
-  /// (into the slot; `visit` must not use the slot). The chain joins the free list as it is
-  /// linked: only its last link is written.
+  /// into the slot (`visit` must not change the chain's links). The chain joins the free list as
+  /// it is linked: only its last link is written.
   template <class Visit>
   CGAL_EXT_ALWAYS_INLINE void take_chain(std::size_t slot, std::uint32_t i, Visit visit)
   {
