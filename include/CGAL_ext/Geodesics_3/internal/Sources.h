@@ -256,7 +256,7 @@ void emit_vertex_windows(const Mesh_cache& m, int v, double sigma, Relax relax, 
         w.b0 = std::min(std::max((1 - fraction(t1)) * f.length, 0.), f.length);
       if(t0 > 0)
         w.b1 = std::min(std::max((1 - fraction(t0)) * f.length, 0.), f.length);
-      if(!(w.b1 > w.b0))
+      if(is_empty(w))
         return;
     }
     add(g, w);

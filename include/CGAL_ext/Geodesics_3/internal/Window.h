@@ -66,6 +66,10 @@ inline double norm2d(double x, double y) { return square_root(x * x + y * y); }
 
 inline double distance_at(const Window_geometry& w, double x) { return w.sigma + norm2d(x - w.sx, w.sy); }
 
+/// Whether the window holds no ray: its interval is empty, as trimming or clipping leave a
+/// window they remove whole (b1 = b0), or NaN.
+inline bool is_empty(const Window_geometry& w) { return !(w.b1 > w.b0); }
+
 /// Where the path that gave a vertex its distance comes from: a point of that path's last
 /// segment minus the vertex, in the frame of `halfedge`, a half-edge of a face with the vertex as
 /// a corner that holds the segment's end at the vertex; `halfedge` is -1 when unknown (a
@@ -166,7 +170,7 @@ inline bool trim_by_edge_vertices(Window_geometry& w, double& at_b0, double& at_
   if(at_b0 - w.b0 > d_from || at_b1 + w.b1 > d_to + length)
     cut_by_edge_vertices(w, at_b0, at_b1, length, d_from, d_to);
   key = (w.sx > w.b0 && w.sx < w.b1) ? w.sigma - w.sy : std::min(at_b0, at_b1);
-  return w.b1 > w.b0;
+  return !is_empty(w);
 }
 
 /// The same, the distances at the ends computed here.
