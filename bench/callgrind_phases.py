@@ -17,7 +17,7 @@ import subprocess
 import sys
 
 PHASES = [
-    ('pairwise clipping', ['prune_pairs', 'sort_by_start', 'clip_pair', 'compare_on_overlap', 'equal_distance_points']),
+    ('pairwise clipping', ['prune_pairs', 'clip_against_later', 'sort_by_start', 'clip_pair', 'compare_on_overlap', 'equal_distance_points']),
     ('trimming', ['trim_by_edge_vertices', 'keep_window', 'list_window']),
     ('unfolding', ['make_child', 'face_crossing', 'apex_crossing', 'distance_to_apex']),
     ('emissions of pseudo-sources', ['compute_emission', 'apply_emission', 'emit_', 'saddle_cone', 'polar_angle']),
@@ -26,7 +26,7 @@ PHASES = [
                           'insert_window', 'note_live_windows', 'for_each_outgoing', 'run()', 'Min_heap',
                           'take_vertices', 'flush_waiting', 'limit()', 'reset_wavefront', 'update_stop']),
 ]
-HELPERS = ('allocator_traits', 'norm2d', 'square_root', '_mm_', 'distance_at(', ' std::max<', ' std::min<', 'std::abs', 'std::sqrt',
+HELPERS = ('allocator_traits', 'Double_pair', 'clamp_to', 'square_roots', 'norm2d', 'square_root', '_mm_', 'distance_at(', ' std::max<', ' std::min<', 'std::abs', 'std::sqrt',
            'std::copysign', 'std::isfinite', 'std::vector<', '__new_allocator', '__normal_iterator',
            'Mesh_cache::', 'std::operator<', 'std::__and_', 'std::swap', 'std::move', 'std::pair<', 'enable_if',
            '__gnu_cxx::operator', '__ops::')

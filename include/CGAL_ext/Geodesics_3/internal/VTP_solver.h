@@ -71,6 +71,8 @@ struct List_task
   // and those lists' half-edges (once there are children), so that the serial merge does not
   // read the mesh's opposites
   int to_ac_halfedge = -1, to_cb_halfedge = -1;
+  bool trim_input = true; // whether an end vertex of the list's edge was lowered since a window joined it
+  double d_from = 0, d_to = 0, d_apex = 0; // the distances of the face's vertices the children were trimmed with
   std::vector<Window> propagated; // the list's windows as propagated, when they are recorded
 };
 
@@ -387,6 +389,7 @@ private:
     note_reached(v);
     note_read(v);
     m_distance[v] = d;
+    mark_lists_to_trim(v);
     m_nearest_source[v] = source;
     if(!m_is_taken[v] || m_emits_when_taken[v]) {
       if(m_batched)
@@ -459,6 +462,17 @@ private:
     }
   }
 
+  // The lists on the edges at v hold windows trimmed against a distance of v that is no longer
+  // its own: they are trimmed again when taken. (Every half-edge at v is an h or prev(h) of a
+  // face around v.)
+  void mark_lists_to_trim(int v)
+  {
+    m_mesh.for_each_outgoing(v, [&](int h) {
+      m_list_flags[std::size_t(h)] |= trim_when_taken;
+      m_list_flags[std::size_t(Mesh_cache::prev(h))] |= trim_when_taken;
+    });
+  }
+
   bool inside_swept_region(int h) const { return m_is_taken[m_mesh.source(h)] || m_is_taken[m_mesh.target(h)]; }
 
   void schedule(int h)
@@ -472,9 +486,15 @@ private:
   // Adds a chain of windows (already trimmed) to the list of half-edge h, and schedules the list
   // when it lies in the swept region (or when every list is being flushed); otherwise it
   // waits. The order of windows in a list does not matter: they are sorted when the list is
-  // propagated.
-  void add_chain(int h, const Window_list& chain)
+  // propagated. `trimmed_now`: the chain was trimmed against the current distances of h's end
+  // vertices, so that the list needs no trimming when taken unless it already did or one of
+  // them is lowered.
+  void add_chain(int h, const Window_list& chain, bool trimmed_now)
   {
+    if(m_head[h] == Window_pool::nil)
+      m_list_flags[h] &= std::uint8_t(~trim_when_taken);
+    if(!trimmed_now)
+      m_list_flags[h] |= trim_when_taken;
     *chain.end_link = m_head[h];
     m_head[h] = chain.head;
     m_statistics.windows_created += chain.size;
@@ -580,7 +600,7 @@ private:
     for(const auto& [g, index] : e.windows) {
       Window_list chain;
       chain.assign_one(m_pool, index);
-      add_chain(g, chain);
+      add_chain(g, chain, false); // (the relaxations of the round's other emissions came after)
     }
     note_live_windows(m_pool);
   }
@@ -774,7 +794,8 @@ private:
 
   void detach(int h, List_task& task)
   {
-    m_list_flags[h] &= std::uint8_t(~in_scheduled_lists);
+    task.trim_input = (m_list_flags[h] & trim_when_taken) || m_window_limit < infinity();
+    m_list_flags[h] &= std::uint8_t(~(in_scheduled_lists | trim_when_taken));
     task.halfedge = h;
     task.input = m_head[h];
     if(!m_read_stamp.empty()) {
@@ -804,10 +825,14 @@ private:
     const double d_from = m_distance[m_mesh.source(h)];
     const double d_to = m_distance[m_mesh.target(h)];
     // (the caller has asked for the windows: `prefetch_chain` or `prefetch_chains`)
-    m_pool.take_chain(slot, task.input, [&](Window& listed) CGAL_EXT_ALWAYS_INLINE {
-      if(keep_window(listed, h, d_from, d_to))
-        windows.push_back(listed);
-    });
+    // Trimming again windows trimmed against the same distances would leave them as they are.
+    if(task.trim_input)
+      m_pool.take_chain(slot, task.input, [&](Window& listed) CGAL_EXT_ALWAYS_INLINE {
+        if(keep_window(listed, h, d_from, d_to))
+          windows.push_back(listed);
+      });
+    else
+      m_pool.take_chain(slot, task.input, [&](Window& listed) CGAL_EXT_ALWAYS_INLINE { windows.push_back(listed); });
     task.input = Window_pool::nil;
     if(windows.empty())
       return;
@@ -837,6 +862,9 @@ private:
     }
 
     const double d_apex = std::min(m_distance[m_mesh.apex(h)], best);
+    task.d_from = d_from;
+    task.d_to = d_to;
+    task.d_apex = d_apex;
     const Face_crossing across = face_crossing(m_mesh, h, f);
     task.to_ac_halfedge = across.to_ac;
     task.to_cb_halfedge = across.to_cb;
@@ -870,10 +898,17 @@ private:
       record_task(task, m_main_slot);
     if(task.apex_distance < infinity())
       relax(m_mesh.apex(h), task.apex_distance, task.apex_source, task.apex_arrival);
-    if(task.to_ac.size)
-      add_chain(task.to_ac_halfedge, task.to_ac);
-    if(task.to_cb.size)
-      add_chain(task.to_cb_halfedge, task.to_cb);
+    if(task.to_ac.size || task.to_cb.size) {
+      // Sequentially always; in a batch, unless a merge before this one lowered a vertex of the
+      // face (or the apex below what this task found).
+      const bool trimmed_now = !m_batched || (m_distance[m_mesh.source(h)] == task.d_from &&
+                               m_distance[m_mesh.target(h)] == task.d_to &&
+                               m_distance[m_mesh.apex(h)] == task.d_apex);
+      if(task.to_ac.size)
+        add_chain(task.to_ac_halfedge, task.to_ac, trimmed_now);
+      if(task.to_cb.size)
+        add_chain(task.to_cb_halfedge, task.to_cb, trimmed_now);
+    }
   }
 
   // What `merge(task)` will read, asked of the caches a few tasks ahead: the merges are serial
@@ -994,7 +1029,8 @@ private:
   std::vector<std::uint8_t> m_is_stop;
   std::vector<std::uint32_t> m_head; // the first window of the list of each half-edge
   // per half-edge: whether its list is in m_scheduled_lists, in m_waiting_lists
-  static constexpr std::uint8_t in_scheduled_lists = 1, in_waiting_lists = 2;
+  // and whether it must be trimmed when taken (`add_chain`, `mark_lists_to_trim`)
+  static constexpr std::uint8_t in_scheduled_lists = 1, in_waiting_lists = 2, trim_when_taken = 4;
   std::vector<std::uint8_t> m_list_flags;
   std::vector<int> m_waiting_lists;   // lists holding windows outside the swept region
   std::vector<int> m_scheduled_lists; // lists to propagate, in order

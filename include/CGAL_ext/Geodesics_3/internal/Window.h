@@ -3,6 +3,7 @@
 #define CGAL_EXT_GEODESICS_3_INTERNAL_WINDOW_H
 
 #include <CGAL_ext/Geodesics_3/Tolerances.h>
+#include <CGAL_ext/Geodesics_3/internal/Double_pair.h>
 #include <CGAL_ext/Geodesics_3/internal/Inlining.h>
 #include <CGAL_ext/Geodesics_3/internal/Mesh_cache.h>
 
@@ -113,8 +114,11 @@ inline Window list_window(const Window_geometry& g, int source)
 {
   Window w;
   static_cast<Window_geometry&>(w) = g;
-  w.d0 = distance_at(g, g.b0);
-  w.d1 = distance_at(g, g.b1);
+  // distance_at(g, b0) and distance_at(g, b1), side by side
+  const Double_pair x = Double_pair(g.b0, g.b1) - Double_pair::both(g.sx);
+  const Double_pair d = Double_pair::both(g.sigma) + square_roots(x * x + Double_pair::both(g.sy * g.sy));
+  w.d0 = d.first();
+  w.d1 = d.second();
   w.source = source;
   return w;
 }
@@ -418,18 +422,16 @@ inline bool make_child(const Window_geometry& w, double lo, double hi, const Chi
 {
   // Ray from s through (x, 0) meets the line E0 + t (E1 - E0) at
   // t = cross(s - E0, d) / cross(E1 - E0, d), with d = (x - sx, -sy).
-  const double rx = w.sx - e.e0x, ry = w.sy - e.e0y;
-  auto hit = [&](double x) {
-    const double dx = x - w.sx, dy = -w.sy;
-    const double num = rx * dy - ry * dx;
-    const double den = e.ux * dy - e.uy * dx;
-    // clamped to [0, length]; where den is 0 the ray is parallel to the edge: num / den is
-    // +-infinity, clamped to the end the signs of num and of den's zero give, or NaN (num is
-    // 0 too), taken as 0
-    const double t = num / den;
-    return t > 0 ? (t < e.length ? t : e.length) : 0.;
-  };
-  const double c0 = hit(lo), c1 = hit(hi);
+  // (the rays through lo and hi side by side)
+  const double rx = w.sx - e.e0x, ry = w.sy - e.e0y, dy = -w.sy;
+  const Double_pair dx = Double_pair(lo, hi) - Double_pair::both(w.sx);
+  const Double_pair num = Double_pair::both(rx * dy) - Double_pair::both(ry) * dx;
+  const Double_pair den = Double_pair::both(e.ux * dy) - Double_pair::both(e.uy) * dx;
+  // clamped to [0, length]; where den is 0 the ray is parallel to the edge: num / den is
+  // +-infinity, clamped to the end the signs of num and of den's zero give, or NaN (num is 0
+  // too), taken as 0
+  const Double_pair t = clamp_to(num / den, e.length);
+  const double c0 = t.first(), c1 = t.second();
   if(!(c1 - c0 > min_length))
     return false;
   child.b0 = c0;
