@@ -412,10 +412,15 @@ TEST(WindowToolkit, IndexedPoolKeepsObjectsByIndex)
     pool.link(index[i]) = index[i + 2];
   const std::size_t chain = (n + 1) / 2;
   pool.link(index[2 * (chain - 1)]) = Pool::nil;
-  pool.prefetch_chain(index[0]);
+  std::vector<gi::Window*> collected;
+  const Pool::Walked_chain walked = pool.collect_chain(index[0], collected);
+  ASSERT_EQ(collected.size(), chain);
+  for(std::size_t i = 0; i < chain; ++i)
+    ASSERT_EQ(collected[i], &pool[index[2 * i]]) << "collected along the links, in their order";
   for(std::size_t i = 0; i < n; ++i)
     ASSERT_EQ(pool[index[i]].source, int(i)) << "links are kept apart from the objects";
-  pool.release_chain(0, index[0]);
+  EXPECT_EQ(pool.live(), n) << "collecting frees nothing";
+  pool.free_chain(0, walked);
   EXPECT_EQ(pool.live(), n - chain);
   for(std::size_t i = 0; i < chain; ++i) {
     std::uint32_t again;
@@ -457,6 +462,39 @@ TEST(WindowToolkit, SquareRootIsStdSqrtBitForBit)
     ASSERT_EQ(bits(gi::square_root(x)), bits(std::sqrt(x))) << "x = " << x;
   EXPECT_TRUE(std::isnan(gi::square_root(-1.)));
   EXPECT_TRUE(std::isnan(gi::square_root(std::numeric_limits<double>::quiet_NaN())));
+}
+
+// Two values computed side by side (a window's two ends) are the bits of the scalar
+// operations, NaN, infinities and signed zeros included; the clamp of a ray's parameter sends
+// NaN and what is not above 0 to +0.
+TEST(WindowToolkit, DoublePairIsTheScalarArithmetic)
+{
+  namespace gi = CGAL_ext::Geodesics_3::internal;
+  const auto bits = [](double x) {
+    std::uint64_t b;
+    std::memcpy(&b, &x, sizeof b);
+    return b;
+  };
+  const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
+  std::vector<double> values{0., -0., 1., -1., 3., inf, -inf, nan, std::numeric_limits<double>::denorm_min(), 1e300};
+  std::mt19937_64 random(5);
+  std::uniform_real_distribution<double> any(-10., 10.);
+  for(int i = 0; i < 2000; ++i)
+    values.push_back(any(random));
+  const double upper = 2.5;
+  const auto clamp = [&](double t) { return t > 0 ? (t < upper ? t : upper) : 0.; };
+  for(std::size_t i = 0; i + 1 < values.size(); ++i) {
+    const double a = values[i], b = values[i + 1], c = values[values.size() - 1 - i];
+    const gi::Double_pair x(a, b), y(c, a);
+    const gi::Double_pair r = (x * x + gi::Double_pair::both(c)) / (x - y);
+    ASSERT_EQ(bits(r.first()), bits((a * a + c) / (a - c))) << a << " " << b << " " << c;
+    ASSERT_EQ(bits(r.second()), bits((b * b + c) / (b - a))) << a << " " << b << " " << c;
+    const gi::Double_pair t = clamp_to(x, upper), s = square_roots(x);
+    ASSERT_EQ(bits(t.first()), bits(clamp(a)));
+    ASSERT_EQ(bits(t.second()), bits(clamp(b)));
+    ASSERT_EQ(bits(s.first()), bits(gi::square_root(a))) << a;
+    ASSERT_EQ(bits(s.second()), bits(gi::square_root(b))) << b;
+  }
 }
 
 // The saddle cone's arctangent agrees with std::atan2 to 3e-15 rad in every quadrant, at the

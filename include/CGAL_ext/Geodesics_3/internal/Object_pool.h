@@ -143,7 +143,7 @@ struct Indexed_pool_slot
 /// blocks that another thread carved, once the step that linked them has ended. The links are
 /// kept apart from the objects, at the end of each block: a walk along a chain reads only them
 /// (a few kB that stay in cache) and can fetch the objects, far apart in the pool, ahead of their
-/// use (`prefetch_chain`) instead of one after the other.
+/// use (`collect_chain`, `prefetch_chains`) instead of one after the other.
 template <class T>
 class Indexed_pool : public Pool_slots<Indexed_pool_slot<T>>
 {
@@ -164,14 +164,6 @@ public:
 
   /// The index of the object after object i in its chain (or in the free list), or nil.
   std::uint32_t& link(std::uint32_t i) const { return links_of(block_of(i))[place_of(i)]; }
-
-  /// Asks the processor to fetch the objects of the chain from `i` on into its caches, along
-  /// their links (a hint: nothing else changes).
-  void prefetch_chain(std::uint32_t i) const
-  {
-    while(i != nil)
-      i = prefetch_and_follow(i);
-  }
 
   /// The same for several chains at once, `cursors[0..count)` their first objects: one link of
   /// each in turn, so that the reads of the chains' links overlap too (a chain that another
@@ -210,29 +202,80 @@ public:
     return p;
   }
 
+  /// A chain walked by `walk_chain`, to be freed whole by `free_chain`.
+  struct Walked_chain
+  {
+    std::uint32_t first = nil;
+    std::uint32_t* last_link = nullptr;
+    std::ptrdiff_t count = 0;
+  };
+
+  /// Calls `visit(object)` for the objects from `i` on along their links (`visit` must not
+  /// change the chain's links); returns what `free_chain` needs.
+  template <class Visit>
+  CGAL_EXT_ALWAYS_INLINE Walked_chain walk_chain(std::uint32_t i, Visit visit) const
+  {
+    Walked_chain chain;
+    chain.first = i;
+    while(i != nil) {
+      T* block = block_of(i);
+      chain.last_link = &links_of(block)[place_of(i)];
+      const std::uint32_t next = *chain.last_link;
+      visit(block[place_of(i)]);
+      ++chain.count;
+      i = next;
+    }
+    return chain;
+  }
+
+  /// Appends the addresses of the objects from `i` on along their links to `objects`, asking the
+  /// processor to fetch each (their reads then overlap instead of waiting for each other);
+  /// returns what `free_chain` needs.
+  Walked_chain collect_chain(std::uint32_t i, std::vector<T*>& objects) const
+  {
+    Walked_chain chain;
+    chain.first = i;
+    while(i != nil) {
+      T* block = block_of(i);
+      T* object = block + place_of(i);
+#if defined(__GNUC__)
+      __builtin_prefetch(object);
+#endif
+      objects.push_back(object);
+      chain.last_link = &links_of(block)[place_of(i)];
+      i = *chain.last_link;
+      ++chain.count;
+    }
+    return chain;
+  }
+
+  /// Frees a walked chain into the slot. It joins the free list as it is linked: only its last
+  /// link is written.
+  void free_chain(std::size_t slot, const Walked_chain& chain)
+  {
+    if(chain.first == nil)
+      return;
+    Slot& s = m_slots[slot];
+    *chain.last_link = s.free;
+    s.free = chain.first;
+    s.live -= chain.count;
+  }
+
+  /// Frees object i alone into the slot.
+  void free_one(std::size_t slot, std::uint32_t i)
+  {
+    Slot& s = m_slots[slot];
+    link(i) = s.free;
+    s.free = i;
+    --s.live;
+  }
+
   /// Calls `visit(object)` for the objects from `i` on along their links, then frees them all
-  /// into the slot (`visit` must not change the chain's links). The chain joins the free list as
-  /// it is linked: only its last link is written.
+  /// into the slot (`visit` must not change the chain's links).
   template <class Visit>
   CGAL_EXT_ALWAYS_INLINE void take_chain(std::size_t slot, std::uint32_t i, Visit visit)
   {
-    if(i == nil)
-      return;
-    const std::uint32_t first = i;
-    std::uint32_t* last_link;
-    std::ptrdiff_t count = 0;
-    do {
-      T* block = block_of(i);
-      last_link = &links_of(block)[place_of(i)];
-      const std::uint32_t next = *last_link;
-      visit(block[place_of(i)]);
-      ++count;
-      i = next;
-    } while(i != nil);
-    Slot& s = m_slots[slot];
-    *last_link = s.free;
-    s.free = first;
-    s.live -= count;
+    free_chain(slot, walk_chain(i, visit));
   }
 
   /// Frees the objects from `i` on along their links.

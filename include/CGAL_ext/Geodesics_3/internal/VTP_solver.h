@@ -692,9 +692,6 @@ private:
       List_task& task = m_task_one;
       for(std::size_t i = 0; i < m_scheduled_lists.size(); ++i) {
         detach(m_scheduled_lists[i], task);
-        // The links first, which stay in cache, to fetch the windows ahead: they are far apart
-        // in the pool, and their reads then overlap instead of waiting for each other.
-        m_pool.prefetch_chain(task.input);
         propagate(task, m_main_slot);
         merge(task);
         note_live_windows(m_pool);
@@ -806,6 +803,17 @@ private:
     m_head[h] = Window_pool::nil;
   }
 
+  // A thread's buffers for the list it propagates (one a thread rather than one a task, so that
+  // they stay in the thread's cache from list to list): the list's windows (where they are in
+  // the pool), what sorting them needs beside them, and the windows that splits added.
+  struct List_buffers
+  {
+    std::vector<Window*> windows;
+    std::vector<std::size_t> run_starts;
+    std::vector<Window*> merged;
+    std::vector<std::uint32_t> extra; // windows allocated for the parts of split windows
+  };
+
   // Takes the windows of the task's list across the face of its half-edge. Reads the mesh and
   // the vertex distances; writes only `task` and what belongs to `slot` (the calling thread's):
   // the pool's slot, which takes back the list's windows and gives the children, and the
@@ -814,44 +822,65 @@ private:
   {
     const int h = task.halfedge;
     List_buffers& buffers = m_list_buffers[slot];
-    std::vector<Window>& windows = buffers.windows;
+    std::vector<Window*>& windows = buffers.windows;
     task.to_ac.clear();
     task.to_cb.clear();
     task.apex_distance = infinity();
     task.apex_source = -1;
     task.apex_arrival = Arrival{};
     windows.clear();
+    buffers.extra.clear();
     const Halfedge_frame f = m_mesh.frame(h);
     const double d_from = m_distance[m_mesh.source(h)];
     const double d_to = m_distance[m_mesh.target(h)];
-    // (the caller has asked for the windows: `prefetch_chain` or `prefetch_chains`)
-    // Trimming again windows trimmed against the same distances would leave them as they are.
-    if(task.trim_input)
-      m_pool.take_chain(slot, task.input, [&](Window& listed) CGAL_EXT_ALWAYS_INLINE {
-        if(keep_window(listed, h, d_from, d_to))
-          windows.push_back(listed);
-      });
-    else
-      m_pool.take_chain(slot, task.input, [&](Window& listed) CGAL_EXT_ALWAYS_INLINE { windows.push_back(listed); });
+    // The list's windows are worked on where they are in the pool, through pointers (their
+    // fetches asked for along the way), and freed at the end: the children are allocated before,
+    // so that none takes the place of a window still read. Trimming windows again against the
+    // distances they were trimmed with would leave them as they are.
+    const Window_pool::Walked_chain input = m_pool.collect_chain(task.input, windows);
+    if(task.trim_input) {
+      std::size_t kept = 0;
+      for(Window* w : windows)
+        if(keep_window(*w, h, d_from, d_to))
+          windows[kept++] = w;
+      windows.resize(kept);
+    }
     task.input = Window_pool::nil;
-    if(windows.empty())
-      return;
+    if(!windows.empty())
+      propagate_windows(task, slot, buffers, f, d_from, d_to);
+    m_pool.free_chain(slot, input);
+    for(std::uint32_t i : buffers.extra)
+      m_pool.free_one(slot, i);
+  }
+
+  // The rest of `propagate` for the list's windows kept, `buffers.windows` (not empty).
+  void propagate_windows(List_task& task, std::size_t slot, List_buffers& buffers, const Halfedge_frame& f,
+                         double d_from, double d_to)
+  {
+    const int h = task.halfedge;
+    std::vector<Window*>& windows = buffers.windows;
     sort_by_start(buffers);
-    prune_pairs(windows, m_min_clipped_overlap);
+    prune_pairs(windows, m_min_clipped_overlap, [&](const Window& right) {
+      std::uint32_t index;
+      Window* p = m_pool.allocate(slot, right, index);
+      buffers.extra.push_back(index);
+      return p;
+    });
     if(m_recorder)
       keep_for_record(task, windows);
 
     // "One angle, two sides": the window with the shortest path to the apex splits the edge.
     double best = infinity(), split = 0;
     const Window* best_window = nullptr;
-    for(const Window& w : windows) {
+    for(const Window* p : windows) {
+      const Window& w = *p;
       if(is_empty(w))
         continue; // clipped away (an empty window makes no child either)
-      double p;
-      const double d = distance_to_apex(w, apex_crossing(w, f.apex_x, f.apex_y), f.apex_x, f.apex_y, p);
+      double at;
+      const double d = distance_to_apex(w, apex_crossing(w, f.apex_x, f.apex_y), f.apex_x, f.apex_y, at);
       if(d < best) {
         best = d;
-        split = p;
+        split = at;
         best_window = &w;
       }
     }
@@ -868,7 +897,8 @@ private:
     const Face_crossing across = face_crossing(m_mesh, h, f);
     task.to_ac_halfedge = across.to_ac;
     task.to_cb_halfedge = across.to_cb;
-    for(const Window& w : windows) {
+    for(const Window* p : windows) {
+      const Window& w = *p;
       const double crossing = apex_crossing(w, f.apex_x, f.apex_y);
       make_children(w, across, std::min(split, crossing), std::max(split, crossing), m_min_window_length,
                     [&](int g, const Window_geometry& geometry, bool onto_ac) CGAL_EXT_ALWAYS_INLINE {
@@ -881,12 +911,12 @@ private:
   }
 
   // Out of line: inlined, its copy made GCC leave the list's sort out of line (+1 % instructions).
-  CGAL_EXT_NOINLINE static void keep_for_record(List_task& task, const std::vector<Window>& windows)
+  CGAL_EXT_NOINLINE static void keep_for_record(List_task& task, const std::vector<Window*>& windows)
   {
     task.propagated.clear();
-    for(const Window& w : windows)
-      if(!is_empty(w)) // not clipped away
-        task.propagated.push_back(w);
+    for(const Window* w : windows)
+      if(!is_empty(*w)) // not clipped away
+        task.propagated.push_back(*w);
   }
 
   // Applies a propagated task: updates the apex, adds the children to their lists.
@@ -937,17 +967,18 @@ private:
   // windows unclipped is safe, since a rule only ever drops rays. A window clipped away is left
   // in place, empty (`is_empty`): it makes no child, and the loops after skip it, which costs
   // less than closing the gaps.
-  static void prune_pairs(std::vector<Window>& windows, double min_overlap)
+  template <class Make_room>
+  static void prune_pairs(std::vector<Window*>& windows, double min_overlap, Make_room make_room)
   {
     if(windows.size() < 2)
       return;
-    Window* w = windows.data(); // and n: refreshed after a split adds a window
+    Window** w = windows.data(); // and n: refreshed after a split adds a window
     std::size_t n = windows.size();
     // (the emptiness tests are written out here: through `is_empty`, GCC compiled the loop worse)
     for(std::size_t i = 0; i < n; ++i) {
-      for(std::size_t j = i + 1; j < n && w[i].b1 > w[i].b0; ++j) {
-        Window& wi = w[i];
-        Window& wj = w[j];
+      Window& wi = *w[i];
+      for(std::size_t j = i + 1; j < n && wi.b1 > wi.b0; ++j) {
+        Window& wj = *w[j];
         if(wj.b0 >= wi.b1)
           break; // sorted by where they start (skipping a pair only keeps more windows)
         if(!(wj.b1 > wj.b0) || std::min(wi.b1, wj.b1) - wj.b0 < min_overlap)
@@ -959,8 +990,9 @@ private:
         if(outcome & 2)
           wj.b1 = wj.b0;
         if(outcome & 4) {
-          auto at = std::upper_bound(windows.begin() + std::ptrdiff_t(j) + 1, windows.end(), right, starts_before);
-          windows.insert(at, right);
+          Window* room = make_room(right);
+          auto at = std::upper_bound(windows.begin() + std::ptrdiff_t(j) + 1, windows.end(), room, starts_before);
+          windows.insert(at, room);
           w = windows.data();
           n = windows.size();
         }
@@ -969,17 +1001,8 @@ private:
   }
 
   // The order of a list's windows: by where they start.
-  static bool starts_before(const Window& a, const Window& b) { return a.b0 < b.b0; }
+  static bool starts_before(const Window* a, const Window* b) { return a->b0 < b->b0; }
 
-  // A thread's buffers for the list it propagates (one a thread rather than one a task, so that
-  // they stay in the thread's cache from list to list): the list's windows, and what sorting
-  // them needs beside them.
-  struct List_buffers
-  {
-    std::vector<Window> windows;
-    std::vector<std::size_t> run_starts;
-    std::vector<Window> merged;
-  };
 
   // Sorts a list's windows by where they start. A list is a few chains of children, each
   // sorted (in the order of its parent list): the runs of windows that start in order are
@@ -988,11 +1011,13 @@ private:
   // have many). Stable, as the order of equal starts is the list's.
   static void sort_by_start(List_buffers& buffers)
   {
-    std::vector<Window>& windows = buffers.windows;
+    std::vector<Window*>& windows = buffers.windows;
     const std::size_t n = windows.size();
+    // (the last start kept at hand: read through the pointers, it would be loaded again)
+    double last = windows[0]->b0;
     std::size_t i = 1;
-    while(i < n && !starts_before(windows[i], windows[i - 1]))
-      ++i;
+    for(; i < n && !(windows[i]->b0 < last); ++i)
+      last = windows[i]->b0;
     if(i >= n)
       return; // one run
     std::vector<std::size_t>& runs = buffers.run_starts; // then the end
