@@ -97,7 +97,8 @@ def phase(chain, fine):
                     return named(p, keys, name)
             if 'VTP_solver::propagate' in name:
                 return 'propagate loops (list copy, apex, children)'
-        if any(k in name for k in HELPERS):
+        # (a helper by its name, not by the types of its parameters: the pool's walks take vectors)
+        if 'Indexed_pool<' not in name.split('(')[0] and any(k in name for k in HELPERS):
             continue
         for p, keys in PHASES:
             if any(k in name for k in keys):
