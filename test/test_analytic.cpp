@@ -435,16 +435,19 @@ TEST(WindowToolkit, IndexedPoolKeepsObjectsByIndex)
     EXPECT_EQ(pool[index[i]].source, int(i)) << "objects not freed are untouched";
 }
 
+// The bits of a double, to compare values bit for bit (signed zeros, NaN's payload).
+static std::uint64_t bits_of(double x)
+{
+  std::uint64_t b;
+  std::memcpy(&b, &x, sizeof b);
+  return b;
+}
+
 // The kernels' square root is std::sqrt's correctly rounded value, bit for bit, from denormals
 // to the largest doubles; a negative argument gives NaN as std::sqrt does.
 TEST(WindowToolkit, SquareRootIsStdSqrtBitForBit)
 {
   namespace gi = CGAL_ext::Geodesics_3::internal;
-  const auto bits = [](double x) {
-    std::uint64_t b;
-    std::memcpy(&b, &x, sizeof b);
-    return b;
-  };
   std::vector<double> values{0.,
                              -0.,
                              1.,
@@ -459,7 +462,7 @@ TEST(WindowToolkit, SquareRootIsStdSqrtBitForBit)
   for(int i = 0; i < 100000; ++i)
     values.push_back(std::ldexp(mantissa(random), exponent(random)));
   for(double x : values)
-    ASSERT_EQ(bits(gi::square_root(x)), bits(std::sqrt(x))) << "x = " << x;
+    ASSERT_EQ(bits_of(gi::square_root(x)), bits_of(std::sqrt(x))) << "x = " << x;
   EXPECT_TRUE(std::isnan(gi::square_root(-1.)));
   EXPECT_TRUE(std::isnan(gi::square_root(std::numeric_limits<double>::quiet_NaN())));
 }
@@ -470,11 +473,6 @@ TEST(WindowToolkit, SquareRootIsStdSqrtBitForBit)
 TEST(WindowToolkit, DoublePairIsTheScalarArithmetic)
 {
   namespace gi = CGAL_ext::Geodesics_3::internal;
-  const auto bits = [](double x) {
-    std::uint64_t b;
-    std::memcpy(&b, &x, sizeof b);
-    return b;
-  };
   const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
   std::vector<double> values{0., -0., 1., -1., 3., inf, -inf, nan, std::numeric_limits<double>::denorm_min(), 1e300};
   std::mt19937_64 random(5);
@@ -487,13 +485,13 @@ TEST(WindowToolkit, DoublePairIsTheScalarArithmetic)
     const double a = values[i], b = values[i + 1], c = values[values.size() - 1 - i];
     const gi::Double_pair x(a, b), y(c, a);
     const gi::Double_pair r = (x * x + gi::Double_pair::both(c)) / (x - y);
-    ASSERT_EQ(bits(r.first()), bits((a * a + c) / (a - c))) << a << " " << b << " " << c;
-    ASSERT_EQ(bits(r.second()), bits((b * b + c) / (b - a))) << a << " " << b << " " << c;
+    ASSERT_EQ(bits_of(r.first()), bits_of((a * a + c) / (a - c))) << a << " " << b << " " << c;
+    ASSERT_EQ(bits_of(r.second()), bits_of((b * b + c) / (b - a))) << a << " " << b << " " << c;
     const gi::Double_pair t = clamp_to(x, upper), s = square_roots(x);
-    ASSERT_EQ(bits(t.first()), bits(clamp(a)));
-    ASSERT_EQ(bits(t.second()), bits(clamp(b)));
-    ASSERT_EQ(bits(s.first()), bits(gi::square_root(a))) << a;
-    ASSERT_EQ(bits(s.second()), bits(gi::square_root(b))) << b;
+    ASSERT_EQ(bits_of(t.first()), bits_of(clamp(a)));
+    ASSERT_EQ(bits_of(t.second()), bits_of(clamp(b)));
+    ASSERT_EQ(bits_of(s.first()), bits_of(gi::square_root(a))) << a;
+    ASSERT_EQ(bits_of(s.second()), bits_of(gi::square_root(b))) << b;
   }
 }
 
