@@ -202,7 +202,7 @@ public:
     return p;
   }
 
-  /// A chain walked by `walk_chain`, to be freed whole by `free_chain`.
+  /// A chain walked along its links, to be freed whole by `free_chain`.
   struct Walked_chain
   {
     std::uint32_t first = nil;
@@ -210,43 +210,17 @@ public:
     std::ptrdiff_t count = 0;
   };
 
-  /// Calls `visit(object)` for the objects from `i` on along their links (`visit` must not
-  /// change the chain's links); returns what `free_chain` needs.
-  template <class Visit>
-  CGAL_EXT_ALWAYS_INLINE Walked_chain walk_chain(std::uint32_t i, Visit visit) const
-  {
-    Walked_chain chain;
-    chain.first = i;
-    while(i != nil) {
-      T* block = block_of(i);
-      chain.last_link = &links_of(block)[place_of(i)];
-      const std::uint32_t next = *chain.last_link;
-      visit(block[place_of(i)]);
-      ++chain.count;
-      i = next;
-    }
-    return chain;
-  }
-
   /// Appends the addresses of the objects from `i` on along their links to `objects`, asking the
   /// processor to fetch each (their reads then overlap instead of waiting for each other);
   /// returns what `free_chain` needs.
   Walked_chain collect_chain(std::uint32_t i, std::vector<T*>& objects) const
   {
-    Walked_chain chain;
-    chain.first = i;
-    while(i != nil) {
-      T* block = block_of(i);
-      T* object = block + place_of(i);
+    return walk_chain(i, [&](T* object) {
 #if defined(__GNUC__)
       __builtin_prefetch(object);
 #endif
       objects.push_back(object);
-      chain.last_link = &links_of(block)[place_of(i)];
-      i = *chain.last_link;
-      ++chain.count;
-    }
-    return chain;
+    });
   }
 
   /// Frees a walked chain into the slot. It joins the free list as it is linked: only its last
@@ -270,24 +244,32 @@ public:
     --s.live;
   }
 
-  /// Calls `visit(object)` for the objects from `i` on along their links, then frees them all
-  /// into the slot (`visit` must not change the chain's links).
-  template <class Visit>
-  CGAL_EXT_ALWAYS_INLINE void take_chain(std::size_t slot, std::uint32_t i, Visit visit)
-  {
-    free_chain(slot, walk_chain(i, visit));
-  }
-
   /// Frees the objects from `i` on along their links.
   void release_chain(std::size_t slot, std::uint32_t i)
   {
-    take_chain(slot, i, [](T&) {});
+    free_chain(slot, walk_chain(i, [](T*) {}));
   }
 
   std::size_t bytes() const { return std::size_t(m_block_count.load()) * Slot::block_bytes; }
 
 private:
   T* block_of(std::uint32_t i) const { return m_blocks[i >> block_bits]; }
+  // Calls `visit(address)` for the objects from `i` on along their links (it must not change
+  // them); returns the chain's first object, last link and length.
+  template <class Visit>
+  CGAL_EXT_ALWAYS_INLINE Walked_chain walk_chain(std::uint32_t i, Visit visit) const
+  {
+    Walked_chain chain;
+    chain.first = i;
+    while(i != nil) {
+      T* block = block_of(i);
+      chain.last_link = &links_of(block)[place_of(i)];
+      visit(block + place_of(i));
+      i = *chain.last_link;
+      ++chain.count;
+    }
+    return chain;
+  }
   // A step of the prefetching walks: asks for object i, returns its link.
   std::uint32_t prefetch_and_follow(std::uint32_t i) const
   {

@@ -600,7 +600,10 @@ private:
     for(const auto& [g, index] : e.windows) {
       Window_list chain;
       chain.assign_one(m_pool, index);
-      add_chain(g, chain, false); // (the relaxations of the round's other emissions came after)
+      // Applied at once (VTP), the emission's windows were trimmed against the distances its
+      // relaxations, just applied, leave; in a batch, the round's earlier emissions may have
+      // lowered their edges' vertices since.
+      add_chain(g, chain, !m_batched);
     }
     note_live_windows(m_pool);
   }

@@ -67,6 +67,13 @@ inline double norm2d(double x, double y) { return square_root(x * x + y * y); }
 
 inline double distance_at(const Window_geometry& w, double x) { return w.sigma + norm2d(x - w.sx, w.sy); }
 
+/// The same at two points side by side (the same bits as two calls).
+inline Double_pair distance_at(const Window_geometry& w, Double_pair x)
+{
+  const Double_pair dx = x - Double_pair::both(w.sx);
+  return Double_pair::both(w.sigma) + square_roots(dx * dx + Double_pair::both(w.sy * w.sy));
+}
+
 /// Whether the window holds no ray: its interval is empty, as trimming or clipping leave a
 /// window they remove whole (b1 = b0), or NaN.
 inline bool is_empty(const Window_geometry& w) { return !(w.b1 > w.b0); }
@@ -114,9 +121,7 @@ inline Window list_window(const Window_geometry& g, int source)
 {
   Window w;
   static_cast<Window_geometry&>(w) = g;
-  // distance_at(g, b0) and distance_at(g, b1), side by side
-  const Double_pair x = Double_pair(g.b0, g.b1) - Double_pair::both(g.sx);
-  const Double_pair d = Double_pair::both(g.sigma) + square_roots(x * x + Double_pair::both(g.sy * g.sy));
+  const Double_pair d = distance_at(g, Double_pair(g.b0, g.b1));
   w.d0 = d.first();
   w.d1 = d.second();
   w.source = source;
