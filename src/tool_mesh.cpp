@@ -35,10 +35,14 @@ Mesh_file make_mesh_file(Soup soup)
 {
   Mesh_file file;
   file.soup = std::move(soup);
+  std::vector<Vertex_index> vertex_of_point;
+  std::vector<Face_index> face_of_polygon;
   file.repairs = CGAL_ext::polygon_soup_to_geodesic_mesh(
-    file.soup.points, file.soup.polygons, file.mesh, file.vertex_of_point, file.face_of_polygon,
+    file.soup.points, file.soup.polygons, file.mesh, vertex_of_point, face_of_polygon,
     CGAL_ext::parameters::glued_vertices_output(std::back_inserter(file.glued_vertices)));
   file.repairs.merged_points += file.soup.points_merged_when_read;
+  file.vertex_of_point = File_to_mesh<Vertex_index>(std::move(vertex_of_point));
+  file.face_of_polygon = File_to_mesh<Face_index>(std::move(face_of_polygon));
 #if defined(__GLIBC__)
   // The repair's temporaries are freed by now, but glibc keeps their pages; given back, they do
   // not stay under what the solver allocates next.

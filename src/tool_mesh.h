@@ -15,6 +15,7 @@
 
 #include <array>
 #include <cstddef>
+#include <iterator>
 #include <string>
 #include <utility>
 #include <vector>
@@ -43,14 +44,64 @@ struct Soup
 /// of its first appearance (CGAL's reader merges them).
 Soup read_soup(const std::string& path);
 
+/// The index in the mesh of each point (or polygon) of the file: a vector, or nothing at all when
+/// each id is its own index, as in a clean file (4 bytes a point and 8 a triangle less).
+template <class Index>
+class File_to_mesh
+{
+public:
+  class const_iterator
+  {
+  public:
+    typedef std::forward_iterator_tag iterator_category;
+    typedef Index value_type;
+    typedef std::ptrdiff_t difference_type;
+    typedef const Index* pointer;
+    typedef Index reference;
+
+    const_iterator(const File_to_mesh* map, std::size_t i) : m_map(map), m_i(i) {}
+    Index operator*() const { return (*m_map)[m_i]; }
+    const_iterator& operator++() { return ++m_i, *this; }
+    bool operator==(const const_iterator& o) const { return m_i == o.m_i; }
+    bool operator!=(const const_iterator& o) const { return m_i != o.m_i; }
+
+  private:
+    const File_to_mesh* m_map;
+    std::size_t m_i;
+  };
+
+  File_to_mesh() = default;
+  explicit File_to_mesh(std::vector<Index> indices) : m_size(indices.size())
+  {
+    for(std::size_t i = 0; i < m_size; ++i)
+      if(indices[i] != Index(typename Index::size_type(i))) {
+        m_indices = std::move(indices);
+        return;
+      }
+  }
+
+  std::size_t size() const { return m_size; }
+  bool is_identity() const { return m_indices.empty(); }
+  Index operator[](std::size_t i) const
+  {
+    return m_indices.empty() ? Index(typename Index::size_type(i)) : m_indices[i];
+  }
+  const_iterator begin() const { return const_iterator(this, 0); }
+  const_iterator end() const { return const_iterator(this, m_size); }
+
+private:
+  std::size_t m_size = 0;
+  std::vector<Index> m_indices; // empty when index i is i
+};
+
 /// A mesh file as the tool uses it: the file's points and polygons, which the ids of the command
 /// line and the outputs refer to, and the triangle mesh the library runs on.
 struct Mesh_file
 {
   Soup soup;
   Mesh mesh;
-  std::vector<Vertex_index> vertex_of_point; // per point of the file
-  std::vector<Face_index> face_of_polygon;   // per polygon of the file; null unless a triangle kept as is
+  File_to_mesh<Vertex_index> vertex_of_point; // per point of the file
+  File_to_mesh<Face_index> face_of_polygon;   // per polygon of the file; null unless a triangle kept as is
   CGAL_ext::Geodesic_mesh_repairs repairs;
   std::vector<std::vector<Vertex_index>> glued_vertices; // the vertices of each point duplicated by the repair
 };

@@ -1,7 +1,8 @@
 // Copyright (c) 2026 The CGAL_ext geodesics developers.
-// The polygons of a mesh file as the tool keeps them while it works: one array of point ids and
-// where each polygon starts (16 bytes a triangle, where a std::vector per polygon takes about 56
-// with the allocator's own), since the file's polygons stay alive beside the mesh and the solver.
+// The polygons of a mesh file as the tool keeps them while it works: one array of point ids and,
+// unless every polygon is a triangle, where each polygon starts (12 bytes a triangle of a triangle
+// mesh, 16 in a mix, where a std::vector per polygon takes about 56 with the allocator's own),
+// since the file's polygons stay alive beside the mesh and the solver.
 
 #ifndef GEODESIC_TOOL_POLYGONS_H
 #define GEODESIC_TOOL_POLYGONS_H
@@ -85,14 +86,21 @@ public:
     }
     if(m_ids.size() + n >= std::numeric_limits<Id>::max())
       throw Tool_error("the mesh is too large for the tool: more than 2^32 - 1 polygon corners");
+    if(n != 3 && m_start.empty()) { // the first polygon that is not a triangle: the starts are needed from now on
+      m_start.reserve(m_size + 2);
+      for(std::size_t i = 0; i <= m_size; ++i)
+        m_start.push_back(Id(3 * i));
+    }
     for(const auto id : polygon)
       m_ids.push_back(Id(id));
-    m_start.push_back(Id(m_ids.size()));
+    if(!m_start.empty())
+      m_start.push_back(Id(m_ids.size()));
+    ++m_size;
   }
 
-  std::size_t size() const { return m_start.size() - 1; }
-  bool empty() const { return size() == 0; }
-  Polygon operator[](std::size_t i) const { return Polygon(m_ids.data() + m_start[i], m_ids.data() + m_start[i + 1]); }
+  std::size_t size() const { return m_size; }
+  bool empty() const { return m_size == 0; }
+  Polygon operator[](std::size_t i) const { return Polygon(m_ids.data() + start(i), m_ids.data() + start(i + 1)); }
   const_iterator begin() const { return const_iterator(this, 0); }
   const_iterator end() const { return const_iterator(this, size()); }
 
@@ -107,13 +115,16 @@ public:
 
   friend bool operator==(const Polygon_list& a, const Polygon_list& b)
   {
-    return a.m_ids == b.m_ids && a.m_start == b.m_start;
+    return a.m_size == b.m_size && a.m_ids == b.m_ids && a.m_start == b.m_start;
   }
   friend bool operator!=(const Polygon_list& a, const Polygon_list& b) { return !(a == b); }
 
 private:
+  std::size_t start(std::size_t i) const { return m_start.empty() ? 3 * i : std::size_t(m_start[i]); }
+
   std::vector<Id> m_ids;
-  std::vector<Id> m_start = std::vector<Id>(1, 0); // where each polygon starts in m_ids, and the end
+  std::vector<Id> m_start; // where each polygon starts in m_ids, and the end; empty while all are triangles
+  std::size_t m_size = 0;
 };
 
 } // namespace geodesic_tool

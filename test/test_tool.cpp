@@ -401,7 +401,32 @@ TEST_F(Tool, the_mesh_of_a_clean_file_keeps_the_file_order)
       ASSERT_EQ(c[1], p[(at + 1) % 3]) << name << " face " << j;
       ASSERT_EQ(c[2], p[(at + 2) % 3]) << name << " face " << j;
     }
+    EXPECT_TRUE(file.vertex_of_point.is_identity()) << name; // kept as nothing
+    EXPECT_TRUE(file.face_of_polygon.is_identity()) << name;
   }
+}
+
+// A repaired file keeps its maps: a point of a soup (polygons that share no point) goes to the
+// vertex of its first copy, and a quad, split into triangles, to no face.
+TEST_F(Tool, the_mesh_of_a_repaired_file_maps_each_point_and_polygon)
+{
+  tool::Soup soup;
+  soup.points = {Point(0, 0, 0), Point(1, 0, 0), Point(1, 1, 0), Point(0, 1, 0),
+                 Point(1, 0, 0), Point(2, 0, 0), Point(1, 1, 0)};
+  soup.polygons = tool::Polygons{{0, 1, 2, 3}, {4, 5, 6}};
+  const Mesh_file file = tool::make_mesh_file(soup);
+  ASSERT_EQ(file.vertex_of_point.size(), 7u);
+  ASSERT_EQ(file.face_of_polygon.size(), 2u);
+  EXPECT_FALSE(file.vertex_of_point.is_identity());
+  EXPECT_FALSE(file.face_of_polygon.is_identity());
+  std::size_t points = 0;
+  for(Vertex_index v : file.vertex_of_point)
+    EXPECT_EQ(file.mesh.point(v), soup.points[points++]);
+  EXPECT_EQ(points, 7u);
+  EXPECT_EQ(file.vertex_of_point[4], file.vertex_of_point[1]);
+  EXPECT_EQ(file.vertex_of_point[6], file.vertex_of_point[2]);
+  EXPECT_EQ(file.face_of_polygon[0], Mesh::null_face());
+  EXPECT_NE(file.face_of_polygon[1], Mesh::null_face());
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -799,6 +824,18 @@ TEST(Tool_polygons, one_array_keeps_each_polygon)
     corners += polygon.size();
   EXPECT_EQ(corners, 12u);
   EXPECT_EQ(polygons, (tool::Polygons{{0, 1, 2}, {2, 1, 3, 4}, {4, 5, 6, 7, 8}}));
+  // Triangles only keep no starts; a polygon after them is where the starts begin.
+  const std::vector<std::vector<std::size_t>> triangles_first = {{0, 1, 2}, {2, 1, 3}, {3, 4, 5, 6}, {6, 7, 8}};
+  tool::Polygons mixed;
+  for(std::size_t i = 0; i < triangles_first.size(); ++i) {
+    mixed.push_back(triangles_first[i]);
+    ASSERT_EQ(mixed.size(), i + 1);
+    EXPECT_EQ(mixed.to_vectors(), std::vector<std::vector<std::size_t>>(triangles_first.begin(),
+                                                                          triangles_first.begin() + i + 1));
+  }
+  EXPECT_EQ(mixed[3][2], 8u);
+  EXPECT_NE(mixed, polygons);
+  EXPECT_NE((tool::Polygons{{0, 1, 2}}), (tool::Polygons{{0, 1, 2}, {}}));
   tool::Polygons too_large;
   EXPECT_THROW(too_large.push_back(std::vector<std::size_t>{0, 1, std::size_t(1) << 32}), tool::Tool_error);
   EXPECT_TRUE(too_large.empty()); // nothing of the refused polygon is kept
