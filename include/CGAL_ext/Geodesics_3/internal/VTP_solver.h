@@ -16,6 +16,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -71,8 +72,6 @@ struct List_task
   // and those lists' half-edges (once there are children), so that the serial merge does not
   // read the mesh's opposites
   int to_ac_halfedge = -1, to_cb_halfedge = -1;
-  bool trim_input = true; // whether an end vertex of the list's edge was lowered since a window joined it
-  double d_from = 0, d_to = 0, d_apex = 0; // the distances of the face's vertices the children were trimmed with
   std::vector<Window> propagated; // the list's windows as propagated, when they are recorded
 };
 
@@ -285,6 +284,7 @@ public:
       if(s.vertex >= 0) {
         note_read(s.vertex);
         m_emits_when_taken[s.vertex] = 1;
+        next_step(); // after the windows of a face point emitted before
         relax(s.vertex, 0., index);
       } else {
         emit_from_face_point(s, index);
@@ -321,10 +321,14 @@ private:
     }
     m_reached.clear();
     if(++m_run == 0) { // the stamps wrapped around: none may look current
-      std::fill(m_stamp.begin(), m_stamp.end(), 0);
       std::fill(m_read_stamp.begin(), m_read_stamp.end(), 0);
       m_run = 1;
     }
+    if(m_step >= first_step_to_wrap) { // no window is left: the steps can start again
+      std::fill(m_set_at.begin(), m_set_at.end(), 0);
+      m_step = 0;
+    }
+    m_first_step_of_run = ++m_step;
     m_sources.clear();
     for(int v : m_stop_vertices)
       m_is_stop[v] = 0;
@@ -378,10 +382,23 @@ private:
 
   void note_reached(int v)
   {
-    if(m_stamp[v] != m_run) {
-      m_stamp[v] = m_run;
+    if(m_set_at[v] < m_first_step_of_run) {
+      m_set_at[v] = m_step;
       m_reached.push_back(v);
     }
+  }
+
+  // The steps of a run: each propagation of a list and each emission (sequential), or each
+  // phase of a round (batched: the emissions computed, then applied; the lists propagated, then
+  // merged). A window is trimmed against the distances of its edge's end vertices at its step,
+  // a distance set at a step is noted with it, and the window must be trimmed again when taken
+  // only if a vertex of its edge was set at a later step (`propagate`). A step that sets a
+  // distance before it makes windows (sequential: a list's apex, an emission's relaxations) made
+  // them against the distance it set.
+  void next_step()
+  {
+    if(++m_step == std::numeric_limits<std::uint32_t>::max())
+      throw Geodesic_error("the run is too long for VTP: more than 2^32 - 1 propagation steps");
   }
 
   void set_distance(int v, double d, int source)
@@ -389,7 +406,7 @@ private:
     note_reached(v);
     note_read(v);
     m_distance[v] = d;
-    mark_lists_to_trim(v);
+    m_set_at[v] = m_step;
     m_nearest_source[v] = source;
     if(!m_is_taken[v] || m_emits_when_taken[v]) {
       if(m_batched)
@@ -462,17 +479,6 @@ private:
     }
   }
 
-  // The lists on the edges at v hold windows trimmed against a distance of v that is no longer
-  // its own: they are trimmed again when taken. (Every half-edge at v is an h or prev(h) of a
-  // face around v.)
-  void mark_lists_to_trim(int v)
-  {
-    m_mesh.for_each_outgoing(v, [&](int h) {
-      m_list_flags[std::size_t(h)] |= trim_when_taken;
-      m_list_flags[std::size_t(Mesh_cache::prev(h))] |= trim_when_taken;
-    });
-  }
-
   bool inside_swept_region(int h) const { return m_is_taken[m_mesh.source(h)] || m_is_taken[m_mesh.target(h)]; }
 
   void schedule(int h)
@@ -486,15 +492,9 @@ private:
   // Adds a chain of windows (already trimmed) to the list of half-edge h, and schedules the list
   // when it lies in the swept region (or when every list is being flushed); otherwise it
   // waits. The order of windows in a list does not matter: they are sorted when the list is
-  // propagated. `trimmed_now`: the chain was trimmed against the current distances of h's end
-  // vertices, so that the list needs no trimming when taken unless it already did or one of
-  // them is lowered.
-  void add_chain(int h, const Window_list& chain, bool trimmed_now)
+  // propagated.
+  void add_chain(int h, const Window_list& chain)
   {
-    if(m_head[h] == Window_pool::nil)
-      m_list_flags[h] &= std::uint8_t(~trim_when_taken);
-    if(!trimmed_now)
-      m_list_flags[h] |= trim_when_taken;
     *chain.end_link = m_head[h];
     m_head[h] = chain.head;
     m_statistics.windows_created += chain.size;
@@ -525,6 +525,7 @@ private:
     }
     m_window_limit = limit();
     m_emission_one.vertex = v;
+    next_step();
     compute_emission(m_emission_one, m_main_slot);
     apply_emission(m_emission_one);
   }
@@ -542,8 +543,10 @@ private:
     if(n == 0)
       return;
     m_window_limit = limit();
+    next_step();
     for_each_index(m_parallel, n, emission_grain,
                    [this](std::size_t i, std::size_t slot) { compute_emission(m_emissions[i], slot); });
+    next_step(); // each emission's windows are trimmed again where another one lowered a vertex
     for(std::size_t i = 0; i < n; ++i)
       apply_emission(m_emissions[i]);
     m_deferred_emissions = 0;
@@ -584,7 +587,7 @@ private:
           e.relaxations.push_back({u, source, d, a});
       },
       [&](int g, const Window_geometry& geometry) {
-        Window w = list_window(geometry, source);
+        Window w = list_window(geometry, source, m_step);
         if(keep_window(w, g, distance(m_mesh.source(g)), distance(m_mesh.target(g)))) {
           std::uint32_t index;
           m_pool.allocate(slot, w, index);
@@ -600,10 +603,7 @@ private:
     for(const auto& [g, index] : e.windows) {
       Window_list chain;
       chain.assign_one(m_pool, index);
-      // Applied at once (VTP), the emission's windows were trimmed against the distances its
-      // relaxations, just applied, leave; in a batch, the round's earlier emissions may have
-      // lowered their edges' vertices since.
-      add_chain(g, chain, !m_batched);
+      add_chain(g, chain);
     }
     note_live_windows(m_pool);
   }
@@ -611,6 +611,7 @@ private:
   void emit_from_face_point(const Source_point& s, int source)
   {
     m_window_limit = limit();
+    next_step();
     compute_windows(m_emission_one, m_main_slot, source,
                     [&](auto relax, auto add) { emit_face_point_windows(m_mesh, s, relax, add); });
     apply_emission(m_emission_one);
@@ -695,6 +696,7 @@ private:
       List_task& task = m_task_one;
       for(std::size_t i = 0; i < m_scheduled_lists.size(); ++i) {
         detach(m_scheduled_lists[i], task);
+        next_step();
         propagate(task, m_main_slot);
         merge(task);
         note_live_windows(m_pool);
@@ -713,11 +715,13 @@ private:
       }
       m_scheduled_lists.clear();
       auto start = Clock::now();
+      next_step();
       propagate_tasks(n);
       if(m_recorder)
         record_round(n);
       m_statistics.seconds_propagation += seconds_since(start);
       start = Clock::now();
+      next_step(); // the children of a list are trimmed again where a merge lowered a vertex
       for(std::size_t i = 0; i < n; ++i) {
         if(i + merge_lookahead < n)
           prefetch_merge(m_tasks[i + merge_lookahead]);
@@ -794,8 +798,7 @@ private:
 
   void detach(int h, List_task& task)
   {
-    task.trim_input = (m_list_flags[h] & trim_when_taken) || m_window_limit < infinity();
-    m_list_flags[h] &= std::uint8_t(~(in_scheduled_lists | trim_when_taken));
+    m_list_flags[h] &= std::uint8_t(~in_scheduled_lists);
     task.halfedge = h;
     task.input = m_head[h];
     if(!m_read_stamp.empty()) {
@@ -838,16 +841,19 @@ private:
     const double d_to = m_distance[m_mesh.target(h)];
     // The list's windows are worked on where they are in the pool, through pointers (their
     // fetches asked for along the way), and freed at the end: the children are allocated before,
-    // so that none takes the place of a window still read. Trimming windows again against the
-    // distances they were trimmed with would leave them as they are.
+    // so that none takes the place of a window still read. Trimming a window again against the
+    // distances it was trimmed with would leave it as it is: only the windows trimmed before a
+    // step that set a distance of the edge's end vertices are (every window, under a finite
+    // limit, which trimming applies too).
     const Window_pool::Walked_chain input = m_pool.collect_chain(task.input, windows);
-    if(task.trim_input) {
-      std::size_t kept = 0;
-      for(Window* w : windows)
-        if(keep_window(*w, h, d_from, d_to))
-          windows[kept++] = w;
-      windows.resize(kept);
-    }
+    const std::uint32_t stale_before = m_window_limit < infinity()
+                                         ? std::numeric_limits<std::uint32_t>::max()
+                                         : std::max(m_set_at[m_mesh.source(h)], m_set_at[m_mesh.target(h)]);
+    std::size_t kept = 0;
+    for(Window* w : windows)
+      if(w->trimmed_at >= stale_before || keep_window(*w, h, d_from, d_to))
+        windows[kept++] = w;
+    windows.resize(kept);
     task.input = Window_pool::nil;
     if(!windows.empty())
       propagate_windows(task, slot, buffers, f, d_from, d_to);
@@ -894,9 +900,6 @@ private:
     }
 
     const double d_apex = std::min(m_distance[m_mesh.apex(h)], best);
-    task.d_from = d_from;
-    task.d_to = d_to;
-    task.d_apex = d_apex;
     const Face_crossing across = face_crossing(m_mesh, h, f);
     task.to_ac_halfedge = across.to_ac;
     task.to_cb_halfedge = across.to_cb;
@@ -905,7 +908,7 @@ private:
       const double crossing = apex_crossing(w, f.apex_x, f.apex_y);
       make_children(w, across, std::min(split, crossing), std::max(split, crossing), m_min_window_length,
                     [&](int g, const Window_geometry& geometry, bool onto_ac) CGAL_EXT_ALWAYS_INLINE {
-                      Window child = list_window(geometry, w.source);
+                      Window child = list_window(geometry, w.source, m_step);
                       // A -> C runs from the source of h to the apex, C -> B from the apex to the target
                       if(onto_ac ? keep_window(child, g, d_from, d_apex) : keep_window(child, g, d_apex, d_to))
                         (onto_ac ? task.to_ac : task.to_cb).push_back(m_pool, slot, child);
@@ -931,17 +934,10 @@ private:
       record_task(task, m_main_slot);
     if(task.apex_distance < infinity())
       relax(m_mesh.apex(h), task.apex_distance, task.apex_source, task.apex_arrival);
-    if(task.to_ac.size || task.to_cb.size) {
-      // Sequentially always; in a batch, unless a merge before this one lowered a vertex of the
-      // face (or the apex below what this task found).
-      const bool trimmed_now = !m_batched || (m_distance[m_mesh.source(h)] == task.d_from &&
-                               m_distance[m_mesh.target(h)] == task.d_to &&
-                               m_distance[m_mesh.apex(h)] == task.d_apex);
-      if(task.to_ac.size)
-        add_chain(task.to_ac_halfedge, task.to_ac, trimmed_now);
-      if(task.to_cb.size)
-        add_chain(task.to_cb_halfedge, task.to_cb, trimmed_now);
-    }
+    if(task.to_ac.size)
+      add_chain(task.to_ac_halfedge, task.to_ac);
+    if(task.to_cb.size)
+      add_chain(task.to_cb_halfedge, task.to_cb);
   }
 
   // What `merge(task)` will read, asked of the caches a few tasks ahead: the merges are serial
@@ -1057,8 +1053,7 @@ private:
   std::vector<std::uint8_t> m_is_stop;
   std::vector<std::uint32_t> m_head; // the first window of the list of each half-edge
   // per half-edge: whether its list is in m_scheduled_lists, in m_waiting_lists
-  // and whether it must be trimmed when taken (`add_chain`, `mark_lists_to_trim`)
-  static constexpr std::uint8_t in_scheduled_lists = 1, in_waiting_lists = 2, trim_when_taken = 4;
+  static constexpr std::uint8_t in_scheduled_lists = 1, in_waiting_lists = 2;
   std::vector<std::uint8_t> m_list_flags;
   std::vector<int> m_waiting_lists;   // lists holding windows outside the swept region
   std::vector<int> m_scheduled_lists; // lists to propagate, in order
@@ -1078,7 +1073,10 @@ private:
   int m_first_source_index = 0; // the number of the first source (keep_field_for_next_run)
   bool m_started_from_a_field = false;
   std::vector<int> m_reached;        // vertices whose distance this run set, each once
-  std::vector<std::uint32_t> m_stamp = std::vector<std::uint32_t>(m_mesh.number_of_vertices, 0); // per vertex: the last run that set its distance
+  std::vector<std::uint32_t> m_set_at = std::vector<std::uint32_t>(m_mesh.number_of_vertices, 0); // per vertex: the step that last set its distance
+  std::uint32_t m_step = 1;             // the current step (`next_step`)
+  std::uint32_t m_first_step_of_run = 1; // a vertex set at an earlier step is not reached yet in this run
+  static constexpr std::uint32_t first_step_to_wrap = std::uint32_t(1) << 31;
   std::vector<std::uint32_t> m_read_stamp; // per vertex: the last run that read it (empty: not noted)
   std::uint32_t m_run = 1;
   double m_stop_limit = infinity();

@@ -45,6 +45,7 @@ struct Window : Window_geometry
 {
   double d0, d1;
   int source;
+  std::uint32_t trimmed_at; // VTP: the step whose distances of the edge's end vertices trimmed it
 };
 static_assert(sizeof(Window) == 64, "a list window is one cache line");
 
@@ -116,8 +117,9 @@ inline Arrival apex_arrival(int h, const Window_geometry& w, double p, double cx
   return p > w.b0 && p < w.b1 ? arrival_from(h, w.sx, w.sy, cx, cy) : arrival_from(h, p, 0., cx, cy);
 }
 
-/// A list window of `g`, its end distances computed, its paths from source `source`.
-inline Window list_window(const Window_geometry& g, int source)
+/// A list window of `g`, its end distances computed, its paths from source `source`, trimmed at
+/// step `trimmed_at`.
+inline Window list_window(const Window_geometry& g, int source, std::uint32_t trimmed_at)
 {
   Window w;
   static_cast<Window_geometry&>(w) = g;
@@ -125,6 +127,7 @@ inline Window list_window(const Window_geometry& g, int source)
   w.d0 = d.first();
   w.d1 = d.second();
   w.source = source;
+  w.trimmed_at = trimmed_at;
   return w;
 }
 
