@@ -454,7 +454,10 @@ private:
         m_buckets.pop_lowest(bucket);
         if(bucket.empty())
           break;
-        for(const Vertex_entry& e : bucket) {
+        for(std::size_t i = 0; i < bucket.size(); ++i) {
+          if(i + take_lookahead < bucket.size())
+            prefetch_take(bucket[i + take_lookahead].second);
+          const Vertex_entry& e = bucket[i];
           if(e.first > m_distance[e.second])
             continue; // stale
           if(e.first > barrier || m_scheduled_lists.size() >= m_batch_size) {
@@ -477,6 +480,20 @@ private:
         return;
       reset_wavefront_before(lowest_waiting);
     }
+  }
+
+  // What taking v reads first, asked of the caches a few vertices ahead (the vertices of a
+  // bucket are scattered).
+  void prefetch_take(int v) const
+  {
+#if defined(__GNUC__)
+    __builtin_prefetch(&m_distance[std::size_t(v)]);
+    __builtin_prefetch(&m_emitted[std::size_t(v)]);
+    __builtin_prefetch(&m_is_taken[std::size_t(v)]);
+    __builtin_prefetch(&m_mesh.first_outgoing[std::size_t(v)]);
+#else
+    (void)v;
+#endif
   }
 
   bool inside_swept_region(int h) const { return m_is_taken[m_mesh.source(h)] || m_is_taken[m_mesh.target(h)]; }
@@ -951,10 +968,12 @@ private:
     __builtin_prefetch(&m_distance[std::size_t(m_mesh.apex(h))]);
     for(int v : {m_mesh.source(h), m_mesh.target(h), m_mesh.apex(h)})
       __builtin_prefetch(&m_is_taken[std::size_t(v)]);
-    for(int g : {task.to_ac.size ? task.to_ac_halfedge : -1, task.to_cb.size ? task.to_cb_halfedge : -1})
-      if(g >= 0) {
+    for(const auto& [g, chain] : {std::make_pair(task.to_ac_halfedge, &task.to_ac),
+                                  std::make_pair(task.to_cb_halfedge, &task.to_cb)})
+      if(chain->size) {
         __builtin_prefetch(&m_head[std::size_t(g)]);
         __builtin_prefetch(&m_list_flags[std::size_t(g)]);
+        __builtin_prefetch(chain->end_link, 1); // written by the thread that propagated the task
       }
 #else
     (void)task;
@@ -1047,6 +1066,7 @@ private:
   static constexpr std::size_t list_grain = 8;
   static constexpr std::size_t emission_grain = 4;
   static constexpr std::size_t merge_lookahead = 8; // tasks
+  static constexpr std::size_t take_lookahead = 8;  // vertices
 
   std::vector<std::uint8_t> m_is_taken;
   std::vector<std::uint8_t> m_emits_when_taken; // pseudo-source, source, or made a source by a reset
