@@ -6,6 +6,7 @@
 #ifndef GEODESIC_TOOL_MESH_H
 #define GEODESIC_TOOL_MESH_H
 
+#include "tool_index_iterator.h"
 #include "tool_polygons.h"
 
 #include <CGAL_ext/Geodesics_3/Geodesic_mesh_repairs.h>
@@ -15,7 +16,6 @@
 
 #include <array>
 #include <cstddef>
-#include <iterator>
 #include <string>
 #include <utility>
 #include <vector>
@@ -50,25 +50,7 @@ template <class Index>
 class File_to_mesh
 {
 public:
-  class const_iterator
-  {
-  public:
-    typedef std::forward_iterator_tag iterator_category;
-    typedef Index value_type;
-    typedef std::ptrdiff_t difference_type;
-    typedef const Index* pointer;
-    typedef Index reference;
-
-    const_iterator(const File_to_mesh* map, std::size_t i) : m_map(map), m_i(i) {}
-    Index operator*() const { return (*m_map)[m_i]; }
-    const_iterator& operator++() { return ++m_i, *this; }
-    bool operator==(const const_iterator& o) const { return m_i == o.m_i; }
-    bool operator!=(const const_iterator& o) const { return m_i != o.m_i; }
-
-  private:
-    const File_to_mesh* m_map;
-    std::size_t m_i;
-  };
+  typedef Index_iterator<File_to_mesh, Index> const_iterator;
 
   File_to_mesh() = default;
   explicit File_to_mesh(std::vector<Index> indices) : m_size(indices.size())

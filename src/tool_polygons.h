@@ -8,11 +8,11 @@
 #define GEODESIC_TOOL_POLYGONS_H
 
 #include "tool_error.h"
+#include "tool_index_iterator.h"
 
 #include <cstddef>
 #include <cstdint>
 #include <initializer_list>
-#include <iterator>
 #include <limits>
 #include <string>
 #include <vector>
@@ -39,26 +39,7 @@ public:
     const Id* m_end;
   };
 
-  class const_iterator
-  {
-  public:
-    typedef std::forward_iterator_tag iterator_category;
-    typedef Polygon value_type;
-    typedef std::ptrdiff_t difference_type;
-    typedef const Polygon* pointer;
-    typedef Polygon reference;
-
-    const_iterator(const Polygon_list* list, std::size_t i) : m_list(list), m_i(i) {}
-    Polygon operator*() const { return (*m_list)[m_i]; }
-    const_iterator& operator++() { return ++m_i, *this; }
-    const_iterator operator++(int) { const_iterator old = *this; ++m_i; return old; }
-    bool operator==(const const_iterator& o) const { return m_i == o.m_i; }
-    bool operator!=(const const_iterator& o) const { return m_i != o.m_i; }
-
-  private:
-    const Polygon_list* m_list;
-    std::size_t m_i;
-  };
+  typedef Index_iterator<Polygon_list, Polygon> const_iterator;
 
   Polygon_list() = default;
   Polygon_list(std::initializer_list<std::initializer_list<std::size_t>> polygons)
