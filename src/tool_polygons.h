@@ -67,20 +67,33 @@ public:
     }
     if(m_ids.size() + n >= std::numeric_limits<Id>::max())
       throw Tool_error("the mesh is too large for the tool: more than 2^32 - 1 polygon corners");
-    if(n != 3 && m_start.empty()) { // the first polygon that is not a triangle: the starts are needed from now on
-      m_start.reserve(m_size + 2);
-      for(std::size_t i = 0; i <= m_size; ++i)
-        m_start.push_back(Id(3 * i));
+    // The first polygon that is not a triangle: the starts are needed from now on. (Made aside,
+    // and the ids taken back if anything throws: a failed push_back leaves the list as it was.)
+    std::vector<Id> starts;
+    if(n != 3 && m_start.empty()) {
+      const std::size_t count = size();
+      starts.reserve(count + 2);
+      for(std::size_t i = 0; i <= count; ++i)
+        starts.push_back(Id(3 * i));
     }
-    for(const auto id : polygon)
-      m_ids.push_back(Id(id));
-    if(!m_start.empty())
-      m_start.push_back(Id(m_ids.size()));
-    ++m_size;
+    const std::size_t ids_before = m_ids.size();
+    try {
+      for(const auto id : polygon)
+        m_ids.push_back(Id(id));
+      if(!starts.empty())
+        starts.push_back(Id(m_ids.size()));
+      else if(!m_start.empty())
+        m_start.push_back(Id(m_ids.size()));
+    } catch(...) {
+      m_ids.resize(ids_before);
+      throw;
+    }
+    if(!starts.empty())
+      m_start.swap(starts);
   }
 
-  std::size_t size() const { return m_size; }
-  bool empty() const { return m_size == 0; }
+  std::size_t size() const { return m_start.empty() ? m_ids.size() / 3 : m_start.size() - 1; }
+  bool empty() const { return size() == 0; }
   Polygon operator[](std::size_t i) const { return Polygon(m_ids.data() + start(i), m_ids.data() + start(i + 1)); }
   const_iterator begin() const { return const_iterator(this, 0); }
   const_iterator end() const { return const_iterator(this, size()); }
@@ -96,7 +109,7 @@ public:
 
   friend bool operator==(const Polygon_list& a, const Polygon_list& b)
   {
-    return a.m_size == b.m_size && a.m_ids == b.m_ids && a.m_start == b.m_start;
+    return a.m_ids == b.m_ids && a.m_start == b.m_start;
   }
   friend bool operator!=(const Polygon_list& a, const Polygon_list& b) { return !(a == b); }
 
@@ -105,7 +118,6 @@ private:
 
   std::vector<Id> m_ids;
   std::vector<Id> m_start; // where each polygon starts in m_ids, and the end; empty while all are triangles
-  std::size_t m_size = 0;
 };
 
 } // namespace geodesic_tool

@@ -320,13 +320,14 @@ private:
       m_emits_when_taken[v] = m_mesh.is_pseudo_source[v];
     }
     m_reached.clear();
-    if(++m_run == 0) { // the stamps wrapped around: none may look current
+    if(++m_run == 0) { // the read stamps wrapped around: none may look current
       std::fill(m_read_stamp.begin(), m_read_stamp.end(), 0);
       m_run = 1;
     }
     if(m_step >= first_step_to_wrap) { // no window is left: the steps can start again
       std::fill(m_set_at.begin(), m_set_at.end(), 0);
       m_step = 0;
+      m_out_of_steps = false;
     }
     m_first_step_of_run = ++m_step;
     m_sources.clear();
@@ -393,12 +394,17 @@ private:
   // merged). A window is trimmed against the distances of its edge's end vertices at its step,
   // a distance set at a step is noted with it, and the window must be trimmed again when taken
   // only if a vertex of its edge was set at a later step (`propagate`). A step that sets a
-  // distance before it makes windows (sequential: a list's apex, an emission's relaxations) made
-  // them against the distance it set.
+  // distance before it makes windows (sequential: a list's apex, a vertex's emission, which
+  // relaxes the ends of an edge before its window) made them against the distance it set; a
+  // step that may make a window before it sets a distance of its edge (a face point's emission)
+  // takes a second step for its relaxations. A run that uses up the 32-bit steps (some 2^31
+  // steps, hundreds of millions of vertices) goes on with every window trimmed again.
   void next_step()
   {
-    if(++m_step == std::numeric_limits<std::uint32_t>::max())
-      throw Geodesic_error("the run is too long for VTP: more than 2^32 - 1 propagation steps");
+    if(m_step + 1 < std::numeric_limits<std::uint32_t>::max())
+      ++m_step;
+    else
+      m_out_of_steps = true;
   }
 
   void set_distance(int v, double d, int source)
@@ -563,7 +569,7 @@ private:
     next_step();
     for_each_index(m_parallel, n, emission_grain,
                    [this](std::size_t i, std::size_t slot) { compute_emission(m_emissions[i], slot); });
-    next_step(); // each emission's windows are trimmed again where another one lowered a vertex
+    next_step(); // each emission's windows are trimmed again where the round's relaxations lowered a vertex
     for(std::size_t i = 0; i < n; ++i)
       apply_emission(m_emissions[i]);
     m_deferred_emissions = 0;
@@ -631,6 +637,7 @@ private:
     next_step();
     compute_windows(m_emission_one, m_main_slot, source,
                     [&](auto relax, auto add) { emit_face_point_windows(m_mesh, s, relax, add); });
+    next_step(); // a window may come before the relaxation of an end of its edge
     apply_emission(m_emission_one);
   }
 
@@ -863,7 +870,7 @@ private:
     // step that set a distance of the edge's end vertices are (every window, under a finite
     // limit, which trimming applies too).
     const Window_pool::Walked_chain input = m_pool.collect_chain(task.input, windows);
-    const std::uint32_t stale_before = m_window_limit < infinity()
+    const std::uint32_t stale_before = m_window_limit < infinity() || m_out_of_steps
                                          ? std::numeric_limits<std::uint32_t>::max()
                                          : std::max(m_set_at[m_mesh.source(h)], m_set_at[m_mesh.target(h)]);
     std::size_t kept = 0;
@@ -1097,6 +1104,7 @@ private:
   std::uint32_t m_step = 1;             // the current step (`next_step`)
   std::uint32_t m_first_step_of_run = 1; // a vertex set at an earlier step is not reached yet in this run
   static constexpr std::uint32_t first_step_to_wrap = std::uint32_t(1) << 31;
+  bool m_out_of_steps = false; // the steps ran out in this run: every window is trimmed again
   std::vector<std::uint32_t> m_read_stamp; // per vertex: the last run that read it (empty: not noted)
   std::uint32_t m_run = 1;
   double m_stop_limit = infinity();
