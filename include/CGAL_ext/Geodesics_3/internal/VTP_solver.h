@@ -327,7 +327,6 @@ private:
     if(m_step >= first_step_to_wrap) { // no window is left: the steps can start again
       std::fill(m_set_at.begin(), m_set_at.end(), 0);
       m_step = 0;
-      m_out_of_steps = false;
     }
     m_first_step_of_run = ++m_step;
     m_sources.clear();
@@ -383,10 +382,9 @@ private:
 
   void note_reached(int v)
   {
-    if(m_set_at[v] < m_first_step_of_run) {
-      m_set_at[v] = m_step;
+    if(m_set_at[v] < m_first_step_of_run)
       m_reached.push_back(v);
-    }
+    m_set_at[v] = m_step;
   }
 
   // The steps of a run: each propagation of a list and each emission (sequential), or each
@@ -401,18 +399,16 @@ private:
   // steps, hundreds of millions of vertices) goes on with every window trimmed again.
   void next_step()
   {
-    if(m_step + 1 < std::numeric_limits<std::uint32_t>::max())
+    if(!out_of_steps())
       ++m_step;
-    else
-      m_out_of_steps = true;
   }
+  bool out_of_steps() const { return m_step == last_step; }
 
   void set_distance(int v, double d, int source)
   {
     note_reached(v);
     note_read(v);
     m_distance[v] = d;
-    m_set_at[v] = m_step;
     m_nearest_source[v] = source;
     if(!m_is_taken[v] || m_emits_when_taken[v]) {
       if(m_batched)
@@ -870,7 +866,7 @@ private:
     // step that set a distance of the edge's end vertices are (every window, under a finite
     // limit, which trimming applies too).
     const Window_pool::Walked_chain input = m_pool.collect_chain(task.input, windows);
-    const std::uint32_t stale_before = m_window_limit < infinity() || m_out_of_steps
+    const std::uint32_t stale_before = m_window_limit < infinity() || out_of_steps()
                                          ? std::numeric_limits<std::uint32_t>::max()
                                          : std::max(m_set_at[m_mesh.source(h)], m_set_at[m_mesh.target(h)]);
     std::size_t kept = 0;
@@ -1104,7 +1100,9 @@ private:
   std::uint32_t m_step = 1;             // the current step (`next_step`)
   std::uint32_t m_first_step_of_run = 1; // a vertex set at an earlier step is not reached yet in this run
   static constexpr std::uint32_t first_step_to_wrap = std::uint32_t(1) << 31;
-  bool m_out_of_steps = false; // the steps ran out in this run: every window is trimmed again
+  // The steps stop here: every window is trimmed again from then on (`stale_before`), so that
+  // windows and distances of the same step are never taken as trimmed against each other.
+  static constexpr std::uint32_t last_step = std::numeric_limits<std::uint32_t>::max() - 1;
   std::vector<std::uint32_t> m_read_stamp; // per vertex: the last run that read it (empty: not noted)
   std::uint32_t m_run = 1;
   double m_stop_limit = infinity();
