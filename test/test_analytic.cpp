@@ -11,6 +11,11 @@
 #include <CGAL_ext/Geodesics_3/internal/Sources.h>
 #include <CGAL_ext/Geodesics_3/internal/Window.h>
 
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/task_arena.h>
+#endif
+
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -433,6 +438,83 @@ TEST(WindowToolkit, IndexedPoolKeepsObjectsByIndex)
   EXPECT_EQ(pool.bytes(), 4 * Pool::block_size * (sizeof(gi::Window) + sizeof(std::uint32_t)));
   for(std::size_t i = 1; i < n; i += 2)
     EXPECT_EQ(pool[index[i]].source, int(i)) << "objects not freed are untouched";
+}
+
+// With several slots (one per thread), a link is the object's own `next`; a pool that changes
+// its number of slots moves the links of its free lists, which keep their order.
+TEST(WindowToolkit, IndexedPoolKeepsLinksInObjectsWithSeveralSlots)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  namespace gi = CGAL_ext::Geodesics_3::internal;
+  typedef gi::Indexed_pool<gi::Window> Pool;
+  Pool pool;
+  const std::size_t n = 10;
+  std::vector<std::uint32_t> index(n);
+  auto allocate_all = [&](const char* when) {
+    for(std::size_t i = 0; i < n; ++i) {
+      gi::Window w;
+      w.source = int(i);
+      w.next = gi::no_window;
+      std::uint32_t again;
+      pool.allocate(0, w, again);
+      ASSERT_EQ(again, index[i]) << when << ": a freed chain is given again in its order";
+    }
+  };
+  auto free_all = [&]() {
+    for(std::size_t i = 0; i + 1 < n; ++i)
+      pool.link(index[i]) = index[i + 1];
+    pool.link(index[n - 1]) = Pool::nil;
+    std::vector<gi::Window*> collected;
+    const Pool::Walked_chain walked = pool.collect_chain(index[0], collected);
+    ASSERT_EQ(collected.size(), n);
+    pool.free_chain(0, walked);
+  };
+  for(std::size_t i = 0; i < n; ++i) {
+    gi::Window w;
+    w.next = gi::no_window;
+    pool.allocate(0, w, index[i]);
+  }
+  free_all(); // one slot: the links apart
+  tbb::task_arena arena(2);
+  arena.execute([&] { pool.use_one_slot_per_thread(true); });
+  ASSERT_EQ(pool.number_of_slots(), 2u);
+  allocate_all("moved to the objects");
+  pool.link(index[0]) = index[5];
+  EXPECT_EQ(pool[index[0]].next, index[5]) << "a link is the object's own";
+  free_all();
+  // objects of the second slot's own block, freed there
+  std::vector<std::uint32_t> second(3);
+  for(std::uint32_t& i : second) {
+    gi::Window w;
+    w.next = gi::no_window;
+    pool.allocate(1, w, i);
+  }
+  for(std::uint32_t i : second)
+    pool.free_one(1, i);
+  EXPECT_EQ(pool.live(), 0u);
+  const std::size_t bytes = pool.bytes();
+  EXPECT_EQ(bytes, 2 * Pool::block_size * (sizeof(gi::Window) + sizeof(std::uint32_t)));
+  pool.use_one_slot_per_thread(false);
+  ASSERT_EQ(pool.number_of_slots(), 1u);
+  // the slot that stays has every free object: they are given before any new one
+  std::vector<std::uint32_t> all = index, again(n + second.size());
+  all.insert(all.end(), second.begin(), second.end());
+  for(std::uint32_t& i : again) {
+    gi::Window w;
+    w.source = 7;
+    w.next = gi::no_window;
+    pool.allocate(0, w, i);
+  }
+  std::sort(all.begin(), all.end());
+  std::sort(again.begin(), again.end());
+  EXPECT_EQ(again, all) << "the free objects of both slots, each once";
+  EXPECT_EQ(pool.bytes(), bytes);
+  pool.link(index[0]) = index[5];
+  EXPECT_EQ(pool[index[0]].next, gi::no_window) << "the links are apart again";
+  EXPECT_EQ(pool[index[0]].source, 7);
+#else
+  GTEST_SKIP() << "TBB is needed for a pool of several slots";
+#endif
 }
 
 // The bits of a double, to compare values bit for bit (signed zeros, NaN's payload).

@@ -9,6 +9,7 @@
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
+#include <iterator>
 #include <memory>
 #include <new>
 #include <stdexcept>
@@ -119,7 +120,7 @@ struct Indexed_pool_slot
   static constexpr std::size_t block_alignment = 64;
   static constexpr unsigned block_bits = 12;
   static constexpr std::uint32_t block_size = 1u << block_bits;
-  // A block holds its objects, then their links.
+  // A block holds its objects, then their links (used when they are kept apart).
   static constexpr std::size_t block_bytes = (sizeof(T) + sizeof(std::uint32_t)) * block_size;
   struct Free_block
   {
@@ -140,10 +141,16 @@ struct Indexed_pool_slot
 /// The same storage for objects linked by a 32-bit index (`link(i)`, `nil` at the end) instead
 /// of a pointer. An index names a block of the pool and a place in it; blocks are numbered
 /// across slots (the number taken atomically) and never move, so a thread may follow links into
-/// blocks that another thread carved, once the step that linked them has ended. The links are
-/// kept apart from the objects, at the end of each block: a walk along a chain reads only them
-/// (a few kB that stay in cache) and can fetch the objects, far apart in the pool, ahead of their
-/// use (`collect_chain`, `prefetch_chains`) instead of one after the other.
+/// blocks that another thread carved, once the step that linked them has ended.
+///
+/// Where a link is kept depends on the number of slots. With one, the links are kept apart
+/// from the objects, at the end of each block: a walk along a chain reads only them (a few kB
+/// that stay in cache) and fetches the objects, far apart in the pool, ahead of their use
+/// (`collect_chain`) instead of one after the other. With several, a link is the object's own
+/// `std::uint32_t next` member: the objects pass from thread to thread, and kept apart, sixteen
+/// links to a cache line, the links of objects that different threads use would share lines,
+/// which the cores would pass to and fro (doc/design.md); chains are then walked side by side
+/// (`prefetch_chains`), so that their fetches overlap.
 template <class T>
 class Indexed_pool : public Pool_slots<Indexed_pool_slot<T>>
 {
@@ -160,14 +167,53 @@ public:
   // the memory of the rest is never touched.
   Indexed_pool() : m_blocks(new T*[max_blocks]) {}
 
+  /// Gives the pool one slot per thread of the task arena the caller runs in when `parallel`
+  /// (`Pool_slots`), and keeps the links where that number of slots wants them; only with no
+  /// object in use. The blocks and free objects of slots that go are kept by the first one.
+  /// Returns the calling thread's slot.
+  std::size_t use_one_slot_per_thread(bool parallel)
+  {
+    const std::size_t count = parallel ? arena_concurrency() : 1;
+    for(std::size_t k = count; k < m_slots.size(); ++k) {
+      Slot& first = m_slots[0];
+      Slot& s = m_slots[k];
+      std::move(s.blocks.begin(), s.blocks.end(), std::back_inserter(first.blocks));
+      s.blocks.clear();
+      first.live += s.live;
+      while(s.free != nil) {
+        const std::uint32_t i = s.free;
+        s.free = link(i);
+        link(i) = first.free;
+        first.free = i;
+      }
+    }
+    const std::size_t slot = Pool_slots<Slot>::use_one_slot_per_thread(parallel);
+    const bool apart = m_slots.size() == 1;
+    if(apart != m_links_apart)
+      for(Slot& s : m_slots) // the free lists move to the other place of the links
+        for(std::uint32_t i = s.free; i != nil;) {
+          const std::uint32_t next = link(i);
+          m_links_apart = apart;
+          link(i) = next;
+          m_links_apart = !apart;
+          i = next;
+        }
+    m_links_apart = apart;
+    return slot;
+  }
+
   T& operator[](std::uint32_t i) const { return block_of(i)[place_of(i)]; }
 
   /// The index of the object after object i in its chain (or in the free list), or nil.
-  std::uint32_t& link(std::uint32_t i) const { return links_of(block_of(i))[place_of(i)]; }
+  std::uint32_t& link(std::uint32_t i) const
+  {
+    T* block = block_of(i);
+    return m_links_apart ? links_of(block)[place_of(i)] : block[place_of(i)].next;
+  }
 
-  /// The same for several chains at once, `cursors[0..count)` their first objects: one link of
-  /// each in turn, so that the reads of the chains' links overlap too (a chain that another
-  /// thread wrote is a chain of cache misses). The cursors are left at nil.
+  /// Fetches the objects of several chains, `cursors[0..count)` their first objects: one object
+  /// of each in turn, so that the reads of the chains overlap (a chain that another thread wrote
+  /// is a chain of cache misses). The cursors are left at nil.
   void prefetch_chains(std::uint32_t* cursors, std::size_t count) const
   {
     for(bool any = true; any;) {
@@ -182,23 +228,40 @@ public:
   }
 
   /// An object of the slot set to `value`; returns it, and its index in `index`. Its link is
-  /// left as it was. (Inlined: GCC leaves it out of line in VTP's `propagate`.)
+  /// left as it was, or as `value` has it. (Inlined: GCC leaves it out of line in VTP's
+  /// `propagate`.)
   CGAL_EXT_ALWAYS_INLINE T* allocate(std::size_t slot, const T& value, std::uint32_t& index)
+  {
+    std::uint32_t* link;
+    return allocate(slot, value, index, link);
+  }
+  /// The same, giving the object's link too.
+  CGAL_EXT_ALWAYS_INLINE T* allocate(std::size_t slot, const T& value, std::uint32_t& index, std::uint32_t*& link)
+  {
+    T* p = allocate(slot, index, link);
+    *p = value;
+    return p;
+  }
+  /// The same, the object left as it was (to be set by the caller).
+  CGAL_EXT_ALWAYS_INLINE T* allocate(std::size_t slot, std::uint32_t& index, std::uint32_t*& link)
   {
     Slot& s = m_slots[slot];
     T* p;
     if(s.free != nil) {
       index = s.free;
-      p = &(*this)[index];
-      s.free = link(index);
+      T* block = block_of(index);
+      p = block + place_of(index);
+      link = m_links_apart ? links_of(block) + place_of(index) : &p->next;
+      s.free = *link;
     } else {
       if(s.used == block_size)
         new_block(s);
       index = (s.block << block_bits) | s.used;
-      p = s.block_start + s.used++;
+      p = s.block_start + s.used;
+      link = m_links_apart ? links_of(s.block_start) + s.used : &p->next;
+      ++s.used;
     }
     ++s.live;
-    *p = value;
     return p;
   }
 
@@ -211,16 +274,18 @@ public:
   };
 
   /// Appends the addresses of the objects from `i` on along their links to `objects`, asking the
-  /// processor to fetch each (their reads then overlap instead of waiting for each other);
-  /// returns what `free_chain` needs.
+  /// processor to fetch each when the links are apart (their reads then overlap instead of
+  /// waiting for each other); returns what `free_chain` needs.
   Walked_chain collect_chain(std::uint32_t i, std::vector<T*>& objects) const
   {
-    return walk_chain(i, [&](T* object) {
+    if(m_links_apart)
+      return walk_chain<true>(i, [&](T* object) {
 #if defined(__GNUC__)
-      __builtin_prefetch(object);
+        __builtin_prefetch(object);
 #endif
-      objects.push_back(object);
-    });
+        objects.push_back(object);
+      });
+    return walk_chain<false>(i, [&](T* object) { objects.push_back(object); });
   }
 
   /// Frees a walked chain into the slot. It joins the free list as it is linked: only its last
@@ -236,10 +301,12 @@ public:
   }
 
   /// Frees object i alone into the slot.
-  void free_one(std::size_t slot, std::uint32_t i)
+  void free_one(std::size_t slot, std::uint32_t i) { free_one(slot, i, &link(i)); }
+  /// The same, `i_link` its link.
+  void free_one(std::size_t slot, std::uint32_t i, std::uint32_t* i_link)
   {
     Slot& s = m_slots[slot];
-    link(i) = s.free;
+    *i_link = s.free;
     s.free = i;
     --s.live;
   }
@@ -247,7 +314,7 @@ public:
   /// Frees the objects from `i` on along their links.
   void release_chain(std::size_t slot, std::uint32_t i)
   {
-    free_chain(slot, walk_chain(i, [](T*) {}));
+    free_chain(slot, m_links_apart ? walk_chain<true>(i, [](T*) {}) : walk_chain<false>(i, [](T*) {}));
   }
 
   std::size_t bytes() const { return std::size_t(m_block_count.load()) * Slot::block_bytes; }
@@ -256,14 +323,14 @@ private:
   T* block_of(std::uint32_t i) const { return m_blocks[i >> block_bits]; }
   // Calls `visit(address)` for the objects from `i` on along their links (it must not change
   // them); returns the chain's first object, last link and length.
-  template <class Visit>
+  template <bool Apart, class Visit>
   CGAL_EXT_ALWAYS_INLINE Walked_chain walk_chain(std::uint32_t i, Visit visit) const
   {
     Walked_chain chain;
     chain.first = i;
     while(i != nil) {
       T* block = block_of(i);
-      chain.last_link = &links_of(block)[place_of(i)];
+      chain.last_link = Apart ? &links_of(block)[place_of(i)] : &block[place_of(i)].next;
       visit(block + place_of(i));
       i = *chain.last_link;
       ++chain.count;
@@ -273,11 +340,11 @@ private:
   // A step of the prefetching walks: asks for object i, returns its link.
   std::uint32_t prefetch_and_follow(std::uint32_t i) const
   {
-    T* block = block_of(i);
 #if defined(__GNUC__)
-    __builtin_prefetch(block + place_of(i));
+    if(m_links_apart)
+      __builtin_prefetch(&(*this)[i]);
 #endif
-    return links_of(block)[place_of(i)];
+    return link(i);
   }
   static std::uint32_t place_of(std::uint32_t i) { return i & (block_size - 1); }
   static std::uint32_t* links_of(T* block) { return reinterpret_cast<std::uint32_t*>(block + block_size); }
@@ -288,8 +355,8 @@ private:
     if(b >= max_blocks)
       throw std::length_error("geodesic windows: more than 2^32 windows alive at once");
     T* block = static_cast<T*>(::operator new(Slot::block_bytes, std::align_val_t(Slot::block_alignment)));
-    // default-initialized, not zeroed, as in Object_pool: `allocate` writes an object whole (and
-    // a link is written before it is read)
+    // default-initialized, not zeroed, as in Object_pool: an object is written whole when it is
+    // made (`allocate`, or its caller), and a link before it is read
     std::uninitialized_default_construct_n(block, block_size);
     s.blocks.emplace_back(block);
     m_blocks[b] = block;
@@ -299,6 +366,7 @@ private:
   }
 
   std::unique_ptr<T*[]> m_blocks;
+  bool m_links_apart = true; // one slot
   std::atomic<std::uint32_t> m_block_count{0};
 };
 

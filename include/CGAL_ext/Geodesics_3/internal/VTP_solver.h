@@ -26,10 +26,19 @@ namespace internal {
 
 /// Where VTP keeps the windows of its lists.
 typedef Indexed_pool<Window> Window_pool;
+static_assert(Window_pool::nil == no_window, "a chain of windows ends at the pool's nil");
+
+/// A chain of windows of a list (its first window in the pool), and the step whose distances of
+/// the edge's end vertices trimmed them (`VTP_solver::next_step`). A list is a few chains, each
+/// made by one propagation or emission.
+struct List_chain
+{
+  std::uint32_t first;
+  std::uint32_t trimmed_at;
+};
 
 /// Windows of the pool linked one to the next, with the link of the last one (null while there
-/// is none) and their number. The last link is left unset: it is set when the windows are added
-/// to a list.
+/// is none) and their number. The last link is set when the chain is complete (`finish`).
 struct Window_list
 {
   std::uint32_t head = Window_pool::nil;
@@ -37,6 +46,12 @@ struct Window_list
   std::size_t size = 0;
 
   void clear() { head = Window_pool::nil, end_link = nullptr, size = 0; }
+  /// Ends the chain (after its last window).
+  void finish()
+  {
+    if(end_link)
+      *end_link = Window_pool::nil;
+  }
   /// The chain of window `index` of `pool` alone.
   void assign_one(Window_pool& pool, std::uint32_t index)
   {
@@ -44,18 +59,26 @@ struct Window_list
     end_link = &pool.link(index);
     size = 1;
   }
-  /// Appends a new window of `pool`, of the thread's `slot`, set to `w`. (Inlined: GCC leaves
-  /// it out of line in `propagate`, which costs a call a window.)
-  CGAL_EXT_ALWAYS_INLINE void push_back(Window_pool& pool, std::size_t slot, const Window& w)
+  /// Appends a new window of `pool`, of the thread's `slot`, set by `make(window)` in place, if
+  /// it returns true (otherwise the window goes back to the pool). (Inlined: GCC leaves it out
+  /// of line in `propagate`, which costs a call a window.)
+  template <class Make>
+  CGAL_EXT_ALWAYS_INLINE void push_back_made(Window_pool& pool, std::size_t slot, Make make)
   {
-    std::uint32_t index;
-    pool.allocate(slot, w, index);
+    std::uint32_t index, *link;
+    Window* w = pool.allocate(slot, index, link);
+    if(!make(*w)) {
+      pool.free_one(slot, index, link);
+      return;
+    }
     if(end_link) {
       *end_link = index;
-      end_link = &pool.link(index);
       ++size;
-    } else
-      assign_one(pool, index);
+    } else {
+      head = index;
+      size = 1;
+    }
+    end_link = link;
   }
 };
 
@@ -64,11 +87,12 @@ struct Window_list
 struct List_task
 {
   int halfedge = -1;
-  std::uint32_t input = Window_pool::nil; // the list's windows, detached from it
+  std::vector<List_chain> input; // the list's chains of windows, detached from it
   double apex_distance = 0; // shortest path to the apex found through the list
   int apex_source = -1;     // the source of that path
   Arrival apex_arrival;     // and where it comes from
   Window_list to_ac, to_cb; // children for the lists across A->C and C->B
+  std::uint32_t trimmed_at = 0; // the step that trimmed the children
   // and those lists' half-edges (once there are children), so that the serial merge does not
   // read the mesh's opposites
   int to_ac_halfedge = -1, to_cb_halfedge = -1;
@@ -98,6 +122,7 @@ struct Vertex_emission
   int vertex = -1; // the emitting vertex (when it is one)
   std::vector<Vertex_update> relaxations;
   std::vector<std::pair<int, std::uint32_t>> windows; // the half-edge of the list, the window
+  std::uint32_t trimmed_at = 0; // the step that trimmed the windows
   Saddle_cone cone;
 };
 
@@ -508,14 +533,22 @@ private:
     }
   }
 
-  // Adds a chain of windows (already trimmed) to the list of half-edge h, and schedules the list
-  // when it lies in the swept region (or when every list is being flushed); otherwise it
-  // waits. The order of windows in a list does not matter: they are sorted when the list is
-  // propagated.
-  void add_chain(int h, const Window_list& chain)
+  // Adds a chain of windows, trimmed at step `trimmed_at`, to the list of half-edge h, and
+  // schedules the list when it lies in the swept region (or when every list is being flushed);
+  // otherwise it waits. The order of windows in a list does not matter: they are sorted when
+  // the list is propagated. Only the list's chain nodes are written, no window: a window is
+  // written by the thread that makes it alone.
+  void add_chain(int h, const Window_list& chain, std::uint32_t trimmed_at)
   {
-    *chain.end_link = m_head[h];
-    m_head[h] = chain.head;
+    std::uint32_t node = m_free_chain_node;
+    if(node != Window_pool::nil)
+      m_free_chain_node = m_chain_nodes[node].next;
+    else {
+      node = std::uint32_t(m_chain_nodes.size());
+      m_chain_nodes.emplace_back();
+    }
+    m_chain_nodes[node] = Chain_node{List_chain{chain.head, trimmed_at}, m_head[h]};
+    m_head[h] = node;
     m_statistics.windows_created += chain.size;
     if(m_flushing || inside_swept_region(h))
       schedule(h);
@@ -593,6 +626,7 @@ private:
   {
     e.relaxations.clear();
     e.windows.clear();
+    e.trimmed_at = m_step;
     auto distance = [&](int u) {
       double d = m_distance[u];
       for(const Vertex_update& r : e.relaxations)
@@ -606,7 +640,7 @@ private:
           e.relaxations.push_back({u, source, d, a});
       },
       [&](int g, const Window_geometry& geometry) {
-        Window w = list_window(geometry, source, m_step);
+        Window w = list_window(geometry, source);
         if(keep_window(w, g, distance(m_mesh.source(g)), distance(m_mesh.target(g)))) {
           std::uint32_t index;
           m_pool.allocate(slot, w, index);
@@ -622,7 +656,8 @@ private:
     for(const auto& [g, index] : e.windows) {
       Window_list chain;
       chain.assign_one(m_pool, index);
-      add_chain(g, chain);
+      chain.finish();
+      add_chain(g, chain, e.trimmed_at);
     }
     note_live_windows(m_pool);
   }
@@ -704,7 +739,22 @@ private:
 
   void clear_list(int h)
   {
-    m_pool.release_chain(m_main_slot, m_head[h]);
+    take_chains(h, [this](const List_chain& c) { m_pool.release_chain(m_main_slot, c.first); });
+  }
+
+  // Empties the list of h, calling `f(chain)` for each of its chains, newest first (the order
+  // its windows were in when a list was one chain).
+  template <class F>
+  void take_chains(int h, F f)
+  {
+    for(std::uint32_t node = m_head[h]; node != Window_pool::nil;) {
+      Chain_node& n = m_chain_nodes[node];
+      f(n.chain);
+      const std::uint32_t next = n.next;
+      n.next = m_free_chain_node;
+      m_free_chain_node = node;
+      node = next;
+    }
     m_head[h] = Window_pool::nil;
   }
 
@@ -759,12 +809,14 @@ private:
     // fetched at once, their chains walked side by side: the chains of a round were written by
     // any thread, and one chain's links are a chain of cache misses when another core wrote them.
     for_each_chunk(m_parallel, n, list_grain, [this](std::size_t begin, std::size_t end, std::size_t slot) {
-      std::uint32_t cursors[list_grain];
+      std::vector<std::uint32_t>& cursors = m_list_buffers[slot].cursors;
       for(std::size_t first = begin; first < end; first += list_grain) {
         const std::size_t last = std::min(end, first + list_grain);
+        cursors.clear();
         for(std::size_t i = first; i < last; ++i)
-          cursors[i - first] = m_tasks[i].input;
-        m_pool.prefetch_chains(cursors, last - first);
+          for(const List_chain& c : m_tasks[i].input)
+            cursors.push_back(c.first);
+        m_pool.prefetch_chains(cursors.data(), cursors.size());
         for(std::size_t i = first; i < last; ++i)
           propagate(m_tasks[i], slot);
       }
@@ -820,13 +872,13 @@ private:
   {
     m_list_flags[h] &= std::uint8_t(~in_scheduled_lists);
     task.halfedge = h;
-    task.input = m_head[h];
+    task.input.clear();
+    take_chains(h, [&task](const List_chain& c) { task.input.push_back(c); });
     if(!m_read_stamp.empty()) {
       note_read(m_mesh.source(h));
       note_read(m_mesh.target(h));
       note_read(m_mesh.apex(h));
     }
-    m_head[h] = Window_pool::nil;
   }
 
   // A thread's buffers for the list it propagates (one a thread rather than one a task, so that
@@ -838,6 +890,9 @@ private:
     std::vector<std::size_t> run_starts;
     std::vector<Window*> merged;
     std::vector<std::uint32_t> extra; // windows allocated for the parts of split windows
+    std::vector<double> crossings; // per window: where its ray to the apex crosses the edge
+    std::vector<Window_pool::Walked_chain> walked; // the list's chains, to be freed
+    std::vector<std::uint32_t> cursors;           // (`propagate_tasks`)
   };
 
   // Takes the windows of the task's list across the face of its half-edge. Reads the mesh and
@@ -851,33 +906,45 @@ private:
     std::vector<Window*>& windows = buffers.windows;
     task.to_ac.clear();
     task.to_cb.clear();
+    task.trimmed_at = m_step;
     task.apex_distance = infinity();
     task.apex_source = -1;
     task.apex_arrival = Arrival{};
     windows.clear();
     buffers.extra.clear();
+    buffers.walked.clear();
     const Halfedge_frame f = m_mesh.frame(h);
     const double d_from = m_distance[m_mesh.source(h)];
     const double d_to = m_distance[m_mesh.target(h)];
-    // The list's windows are worked on where they are in the pool, through pointers (their
-    // fetches asked for along the way), and freed at the end: the children are allocated before,
-    // so that none takes the place of a window still read. Trimming a window again against the
-    // distances it was trimmed with would leave it as it is: only the windows trimmed before a
-    // step that set a distance of the edge's end vertices are (every window, under a finite
-    // limit, which trimming applies too).
-    const Window_pool::Walked_chain input = m_pool.collect_chain(task.input, windows);
+    // The list's windows are worked on where they are in the pool, through pointers, and freed
+    // at the end: the children are allocated before, so that none takes the place of a window
+    // still read. Trimming a window again against the distances it was trimmed with would leave
+    // it as it is: only the chains trimmed before a step that set a distance of the edge's end
+    // vertices are (every chain, under a finite limit, which trimming applies too).
     const std::uint32_t stale_before = m_window_limit < infinity() || out_of_steps()
                                          ? std::numeric_limits<std::uint32_t>::max()
                                          : std::max(m_set_at[m_mesh.source(h)], m_set_at[m_mesh.target(h)]);
     std::size_t kept = 0;
-    for(Window* w : windows)
-      if(w->trimmed_at >= stale_before || keep_window(*w, h, d_from, d_to))
-        windows[kept++] = w;
-    windows.resize(kept);
-    task.input = Window_pool::nil;
+    for(const List_chain& c : task.input) {
+      const std::size_t begin = windows.size();
+      buffers.walked.push_back(m_pool.collect_chain(c.first, windows));
+      const std::size_t end = windows.size();
+      Window** list = windows.data();
+      if(c.trimmed_at >= stale_before)
+        kept = std::copy(list + begin, list + end, list + kept) - list;
+      else
+        for(std::size_t i = begin; i < end; ++i)
+          if(keep_window(*list[i], h, d_from, d_to))
+            list[kept++] = list[i];
+      windows.resize(kept);
+    }
+    task.input.clear();
     if(!windows.empty())
       propagate_windows(task, slot, buffers, f, d_from, d_to);
-    m_pool.free_chain(slot, input);
+    task.to_ac.finish();
+    task.to_cb.finish();
+    for(const Window_pool::Walked_chain& c : buffers.walked)
+      m_pool.free_chain(slot, c);
     for(std::uint32_t i : buffers.extra)
       m_pool.free_one(slot, i);
   }
@@ -901,12 +968,18 @@ private:
     // "One angle, two sides": the window with the shortest path to the apex splits the edge.
     double best = infinity(), split = 0;
     const Window* best_window = nullptr;
-    for(const Window* p : windows) {
-      const Window& w = *p;
+    // (the size and the data at hand: through the vectors, GCC loads them again at each window)
+    const std::size_t n = windows.size();
+    if(buffers.crossings.size() < n)
+      buffers.crossings.resize(n);
+    Window* const* list = windows.data();
+    double* crossings = buffers.crossings.data();
+    for(std::size_t i = 0; i < n; ++i) {
+      const Window& w = *list[i];
       if(is_empty(w))
         continue; // clipped away (an empty window makes no child either)
       double at;
-      const double d = distance_to_apex(w, apex_crossing(w, f.apex_x, f.apex_y), f.apex_x, f.apex_y, at);
+      const double d = distance_to_apex(w, crossings[i] = apex_crossing(w, f.apex_x, f.apex_y), f.apex_x, f.apex_y, at);
       if(d < best) {
         best = d;
         split = at;
@@ -923,15 +996,18 @@ private:
     const Face_crossing across = face_crossing(m_mesh, h, f);
     task.to_ac_halfedge = across.to_ac;
     task.to_cb_halfedge = across.to_cb;
-    for(const Window* p : windows) {
-      const Window& w = *p;
-      const double crossing = apex_crossing(w, f.apex_x, f.apex_y);
+    for(std::size_t i = 0; i < n; ++i) {
+      const Window& w = *list[i];
+      if(is_empty(w))
+        continue;
+      const double crossing = crossings[i];
       make_children(w, across, std::min(split, crossing), std::max(split, crossing), m_min_window_length,
                     [&](int g, const Window_geometry& geometry, bool onto_ac) CGAL_EXT_ALWAYS_INLINE {
-                      Window child = list_window(geometry, w.source, m_step);
-                      // A -> C runs from the source of h to the apex, C -> B from the apex to the target
-                      if(onto_ac ? keep_window(child, g, d_from, d_apex) : keep_window(child, g, d_apex, d_to))
-                        (onto_ac ? task.to_ac : task.to_cb).push_back(m_pool, slot, child);
+                      (onto_ac ? task.to_ac : task.to_cb).push_back_made(m_pool, slot, [&](Window& child) {
+                        set_list_window(child, geometry, w.source);
+                        // A -> C runs from the source of h to the apex, C -> B from the apex to the target
+                        return onto_ac ? keep_window(child, g, d_from, d_apex) : keep_window(child, g, d_apex, d_to);
+                      });
                     });
     }
   }
@@ -955,9 +1031,9 @@ private:
     if(task.apex_distance < infinity())
       relax(m_mesh.apex(h), task.apex_distance, task.apex_source, task.apex_arrival);
     if(task.to_ac.size)
-      add_chain(task.to_ac_halfedge, task.to_ac);
+      add_chain(task.to_ac_halfedge, task.to_ac, task.trimmed_at);
     if(task.to_cb.size)
-      add_chain(task.to_cb_halfedge, task.to_cb);
+      add_chain(task.to_cb_halfedge, task.to_cb, task.trimmed_at);
   }
 
   // What `merge(task)` will read, asked of the caches a few tasks ahead: the merges are serial
@@ -976,7 +1052,6 @@ private:
       if(chain->size) {
         __builtin_prefetch(&m_head[std::size_t(g)]);
         __builtin_prefetch(&m_list_flags[std::size_t(g)]);
-        __builtin_prefetch(chain->end_link, 1); // written by the thread that propagated the task
       }
 #else
     (void)task;
@@ -1074,7 +1149,16 @@ private:
   std::vector<std::uint8_t> m_is_taken;
   std::vector<std::uint8_t> m_emits_when_taken; // pseudo-source, source, or made a source by a reset
   std::vector<std::uint8_t> m_is_stop;
-  std::vector<std::uint32_t> m_head; // the first window of the list of each half-edge
+  // The lists' chains: per half-edge, the node of its list's newest chain (or nil), each node
+  // linking to the next older one; the nodes not in use are linked from m_free_chain_node.
+  struct Chain_node
+  {
+    List_chain chain;
+    std::uint32_t next;
+  };
+  std::vector<std::uint32_t> m_head;
+  std::vector<Chain_node> m_chain_nodes;
+  std::uint32_t m_free_chain_node = Window_pool::nil;
   // per half-edge: whether its list is in m_scheduled_lists, in m_waiting_lists
   static constexpr std::uint8_t in_scheduled_lists = 1, in_waiting_lists = 2;
   std::vector<std::uint8_t> m_list_flags;

@@ -34,18 +34,23 @@ struct Window_geometry
   double sigma;
 };
 
+/// No window: the end of a chain of windows.
+constexpr std::uint32_t no_window = 0xFFFFFFFFu;
+
 /// A window of a list (VTP keeps its windows in lists per half-edge), with the distances at
 /// the ends of its interval, kept equal to `distance_at(b0)` and `distance_at(b1)` so that
-/// trimming and clipping reuse them, and the index of the source its paths come from: 64 bytes
-/// (with padding), the size of a cache line, which the hot loops (walking, sorting and clipping a
-/// list) work on. The links of a list are kept apart, by the pool (VTP_solver.h). (Not
-/// `alignas(64)`: lists are sorted by value, and GCC notes at every such call that passing
+/// trimming and clipping reuse them, the index of the source its paths come from, and room for
+/// the link to the next window of its chain in VTP's pool (used when several threads share the
+/// pool: a thread that writes a window then writes no line that holds another thread's links):
+/// 64 bytes, the size of a cache line, which the hot loops (walking, sorting and clipping a
+/// list) work on.
+/// (Not `alignas(64)`: lists are sorted by value, and GCC notes at every such call that passing
 /// over-aligned values changed ABI; the pool's blocks are aligned.)
 struct Window : Window_geometry
 {
   double d0, d1;
   int source;
-  std::uint32_t trimmed_at; // VTP: the step whose distances of the edge's end vertices trimmed it
+  std::uint32_t next; // the next window of the chain in the pool, or no_window (`Indexed_pool`)
 };
 static_assert(sizeof(Window) == 64, "a list window is one cache line");
 
@@ -117,17 +122,23 @@ inline Arrival apex_arrival(int h, const Window_geometry& w, double p, double cx
   return p > w.b0 && p < w.b1 ? arrival_from(h, w.sx, w.sy, cx, cy) : arrival_from(h, p, 0., cx, cy);
 }
 
-/// A list window of `g`, its end distances computed, its paths from source `source`, trimmed at
-/// step `trimmed_at`.
-inline Window list_window(const Window_geometry& g, int source, std::uint32_t trimmed_at)
+/// Sets `w` to a list window of `g`, its end distances computed, its paths from source
+/// `source`, alone in its chain.
+inline void set_list_window(Window& w, const Window_geometry& g, int source)
 {
-  Window w;
   static_cast<Window_geometry&>(w) = g;
   const Double_pair d = distance_at(g, Double_pair(g.b0, g.b1));
   w.d0 = d.first();
   w.d1 = d.second();
   w.source = source;
-  w.trimmed_at = trimmed_at;
+  w.next = no_window;
+}
+
+/// The same, returned.
+inline Window list_window(const Window_geometry& g, int source)
+{
+  Window w;
+  set_list_window(w, g, source);
   return w;
 }
 
