@@ -87,7 +87,9 @@ struct Window_list
 struct List_task
 {
   int halfedge = -1;
-  std::vector<List_chain> input; // the list's chains of windows, detached from it
+  // the list's chains of windows, detached from it: its first and last chain nodes (the last
+  // one found by `propagate`), freed by the merge
+  std::uint32_t first_node = Window_pool::nil, last_node = Window_pool::nil;
   double apex_distance = 0; // shortest path to the apex found through the list
   int apex_source = -1;     // the source of that path
   Arrival apex_arrival;     // and where it comes from
@@ -814,8 +816,8 @@ private:
         const std::size_t last = std::min(end, first + list_grain);
         cursors.clear();
         for(std::size_t i = first; i < last; ++i)
-          for(const List_chain& c : m_tasks[i].input)
-            cursors.push_back(c.first);
+          for(std::uint32_t node = m_tasks[i].first_node; node != Window_pool::nil; node = m_chain_nodes[node].next)
+            cursors.push_back(m_chain_nodes[node].chain.first);
         m_pool.prefetch_chains(cursors.data(), cursors.size());
         for(std::size_t i = first; i < last; ++i)
           propagate(m_tasks[i], slot);
@@ -872,8 +874,8 @@ private:
   {
     m_list_flags[h] &= std::uint8_t(~in_scheduled_lists);
     task.halfedge = h;
-    task.input.clear();
-    take_chains(h, [&task](const List_chain& c) { task.input.push_back(c); });
+    task.first_node = m_head[h];
+    m_head[h] = Window_pool::nil;
     if(!m_read_stamp.empty()) {
       note_read(m_mesh.source(h));
       note_read(m_mesh.target(h));
@@ -883,8 +885,10 @@ private:
 
   // A thread's buffers for the list it propagates (one a thread rather than one a task, so that
   // they stay in the thread's cache from list to list): the list's windows (where they are in
-  // the pool), what sorting them needs beside them, and the windows that splits added.
-  struct List_buffers
+  // the pool), what sorting them needs beside them, and the windows that splits added. Each on
+  // its own cache lines: two threads' buffers side by side would share a line that both write
+  // at each window they add.
+  struct alignas(64) List_buffers
   {
     std::vector<Window*> windows;
     std::vector<std::size_t> run_starts;
@@ -925,7 +929,9 @@ private:
                                          ? std::numeric_limits<std::uint32_t>::max()
                                          : std::max(m_set_at[m_mesh.source(h)], m_set_at[m_mesh.target(h)]);
     std::size_t kept = 0;
-    for(const List_chain& c : task.input) {
+    for(std::uint32_t node = task.first_node; node != Window_pool::nil; node = m_chain_nodes[node].next) {
+      task.last_node = node;
+      const List_chain& c = m_chain_nodes[node].chain;
       const std::size_t begin = windows.size();
       buffers.walked.push_back(m_pool.collect_chain(c.first, windows));
       const std::size_t end = windows.size();
@@ -938,7 +944,6 @@ private:
             list[kept++] = list[i];
       windows.resize(kept);
     }
-    task.input.clear();
     if(!windows.empty())
       propagate_windows(task, slot, buffers, f, d_from, d_to);
     task.to_ac.finish();
@@ -1026,6 +1031,11 @@ private:
   {
     ++m_statistics.lists_propagated;
     const int h = task.halfedge;
+    if(task.first_node != Window_pool::nil) { // the list's chain nodes are free again
+      m_chain_nodes[task.last_node].next = m_free_chain_node;
+      m_free_chain_node = task.first_node;
+      task.first_node = Window_pool::nil;
+    }
     if(m_recorder && !m_batched)
       record_task(task, m_main_slot);
     if(task.apex_distance < infinity())
