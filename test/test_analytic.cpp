@@ -441,7 +441,8 @@ TEST(WindowToolkit, IndexedPoolKeepsObjectsByIndex)
 }
 
 // With several slots (one per thread), a link is the object's own `next`; a pool that changes
-// its number of slots moves the links of its free lists, which keep their order.
+// its number of slots moves the links of its free lists (from one slot to two, in their order;
+// from two to one, the slot that stays gets every free object), unless objects are in use.
 TEST(WindowToolkit, IndexedPoolKeepsLinksInObjectsWithSeveralSlots)
 {
 #ifdef CGAL_LINKED_WITH_TBB
@@ -512,6 +513,11 @@ TEST(WindowToolkit, IndexedPoolKeepsLinksInObjectsWithSeveralSlots)
   pool.link(index[0]) = index[5];
   EXPECT_EQ(pool[index[0]].next, gi::no_window) << "the links are apart again";
   EXPECT_EQ(pool[index[0]].source, 7);
+  // objects in use (as a run that threw leaves them): the links stay where they are
+  arena.execute([&] { pool.use_one_slot_per_thread(true); });
+  pool.link(index[1]) = index[5];
+  EXPECT_EQ(pool[index[1]].next, gi::no_window) << "the links stay apart while objects are in use";
+  EXPECT_EQ(pool.link(index[1]), index[5]);
 #else
   GTEST_SKIP() << "TBB is needed for a pool of several slots";
 #endif

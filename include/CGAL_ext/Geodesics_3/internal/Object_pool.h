@@ -26,7 +26,8 @@ class Pool_slots
 {
 public:
   /// Gives the pool one slot per thread of the task arena the caller runs in when `parallel`,
-  /// one slot otherwise, and returns the calling thread's slot; only before any allocation.
+  /// one slot otherwise, and returns the calling thread's slot; only with every object freed
+  /// (the objects of the slots that go are freed with their blocks).
   std::size_t use_one_slot_per_thread(bool parallel)
   {
     m_slots.resize(parallel ? arena_concurrency() : 1);
@@ -168,9 +169,9 @@ public:
   Indexed_pool() : m_blocks(new T*[max_blocks]) {}
 
   /// Gives the pool one slot per thread of the task arena the caller runs in when `parallel`
-  /// (`Pool_slots`), and keeps the links where that number of slots wants them; only with no
-  /// object in use. The blocks and free objects of slots that go are kept by the first one.
-  /// Returns the calling thread's slot.
+  /// (`Pool_slots`), and keeps the links where that number of slots wants them when no object is
+  /// in use. The blocks and free objects of slots that go are kept by the first one. Returns the
+  /// calling thread's slot.
   std::size_t use_one_slot_per_thread(bool parallel)
   {
     const std::size_t count = parallel ? arena_concurrency() : 1;
@@ -189,15 +190,18 @@ public:
     }
     const std::size_t slot = Pool_slots<Slot>::use_one_slot_per_thread(parallel);
     const bool apart = m_slots.size() == 1;
-    if(apart != m_links_apart)
-      for(Slot& s : m_slots) // the free lists move to the other place of the links
-        for(std::uint32_t i = s.free; i != nil;) {
-          const std::uint32_t next = link(i);
-          m_links_apart = apart;
-          link(i) = next;
-          m_links_apart = !apart;
-          i = next;
-        }
+    // (objects still in use, as a run that threw may leave, keep the links where they are: the
+    // layout only costs time)
+    if(apart == m_links_apart || this->live() != 0)
+      return slot;
+    for(Slot& s : m_slots) // the free lists move to the other place of the links
+      for(std::uint32_t i = s.free; i != nil;) {
+        const std::uint32_t next = link(i);
+        m_links_apart = apart;
+        link(i) = next;
+        m_links_apart = !apart;
+        i = next;
+      }
     m_links_apart = apart;
     return slot;
   }

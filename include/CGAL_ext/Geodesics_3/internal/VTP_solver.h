@@ -52,13 +52,6 @@ struct Window_list
     if(end_link)
       *end_link = Window_pool::nil;
   }
-  /// The chain of window `index` of `pool` alone.
-  void assign_one(Window_pool& pool, std::uint32_t index)
-  {
-    head = index;
-    end_link = &pool.link(index);
-    size = 1;
-  }
   /// Appends a new window of `pool`, of the thread's `slot`, set by `make(window)` in place, if
   /// it returns true (otherwise the window goes back to the pool). (Inlined: GCC leaves it out
   /// of line in `propagate`, which costs a call a window.)
@@ -644,8 +637,9 @@ private:
       [&](int g, const Window_geometry& geometry) {
         Window w = list_window(geometry, source);
         if(keep_window(w, g, distance(m_mesh.source(g)), distance(m_mesh.target(g)))) {
-          std::uint32_t index;
-          m_pool.allocate(slot, w, index);
+          std::uint32_t index, *link;
+          m_pool.allocate(slot, w, index, link);
+          *link = Window_pool::nil; // alone in its chain, ended by the thread that made it
           e.windows.push_back({g, index});
         }
       });
@@ -657,8 +651,8 @@ private:
       relax(r.vertex, r.distance, r.source, r.arrival);
     for(const auto& [g, index] : e.windows) {
       Window_list chain;
-      chain.assign_one(m_pool, index);
-      chain.finish();
+      chain.head = index;
+      chain.size = 1;
       add_chain(g, chain, e.trimmed_at);
     }
     note_live_windows(m_pool);

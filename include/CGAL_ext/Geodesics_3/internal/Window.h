@@ -44,8 +44,8 @@ constexpr std::uint32_t no_window = 0xFFFFFFFFu;
 /// pool: a thread that writes a window then writes no line that holds another thread's links):
 /// 64 bytes, the size of a cache line, which the hot loops (walking, sorting and clipping a
 /// list) work on.
-/// (Not `alignas(64)`: lists are sorted by value, and GCC notes at every such call that passing
-/// over-aligned values changed ABI; the pool's blocks are aligned.)
+/// (Not `alignas(64)`: windows are passed and copied by value, and GCC notes at every such call
+/// that passing over-aligned values changed ABI; the pool's blocks are aligned.)
 struct Window : Window_geometry
 {
   double d0, d1;
