@@ -196,11 +196,10 @@ public:
       return slot;
     for(Slot& s : m_slots) // the free lists move to the other place of the links
       for(std::uint32_t i = s.free; i != nil;) {
-        const std::uint32_t next = link(i);
-        m_links_apart = apart;
-        link(i) = next;
-        m_links_apart = !apart;
-        i = next;
+        T* block = block_of(i);
+        std::uint32_t& from = *link_in(block, place_of(i), m_links_apart);
+        *link_in(block, place_of(i), apart) = from;
+        i = from;
       }
     m_links_apart = apart;
     return slot;
@@ -209,11 +208,7 @@ public:
   T& operator[](std::uint32_t i) const { return block_of(i)[place_of(i)]; }
 
   /// The index of the object after object i in its chain (or in the free list), or nil.
-  std::uint32_t& link(std::uint32_t i) const
-  {
-    T* block = block_of(i);
-    return m_links_apart ? links_of(block)[place_of(i)] : block[place_of(i)].next;
-  }
+  std::uint32_t& link(std::uint32_t i) const { return *link_in(block_of(i), place_of(i), m_links_apart); }
 
   /// Fetches the objects of several chains, `cursors[0..count)` their first objects: one object
   /// of each in turn, so that the reads of the chains overlap (a chain that another thread wrote
@@ -255,14 +250,14 @@ public:
       index = s.free;
       T* block = block_of(index);
       p = block + place_of(index);
-      link = m_links_apart ? links_of(block) + place_of(index) : &p->next;
+      link = link_in(block, place_of(index), m_links_apart);
       s.free = *link;
     } else {
       if(s.used == block_size)
         new_block(s);
       index = (s.block << block_bits) | s.used;
       p = s.block_start + s.used;
-      link = m_links_apart ? links_of(s.block_start) + s.used : &p->next;
+      link = link_in(s.block_start, s.used, m_links_apart);
       ++s.used;
     }
     ++s.live;
@@ -334,7 +329,7 @@ private:
     chain.first = i;
     while(i != nil) {
       T* block = block_of(i);
-      chain.last_link = Apart ? &links_of(block)[place_of(i)] : &block[place_of(i)].next;
+      chain.last_link = link_in(block, place_of(i), Apart);
       visit(block + place_of(i));
       i = *chain.last_link;
       ++chain.count;
@@ -344,14 +339,20 @@ private:
   // A step of the prefetching walks: asks for object i, returns its link.
   std::uint32_t prefetch_and_follow(std::uint32_t i) const
   {
+    T* block = block_of(i);
 #if defined(__GNUC__)
-    if(m_links_apart)
-      __builtin_prefetch(&(*this)[i]);
+    if(m_links_apart) // (otherwise reading the link fetches the object)
+      __builtin_prefetch(block + place_of(i));
 #endif
-    return link(i);
+    return *link_in(block, place_of(i), m_links_apart);
   }
   static std::uint32_t place_of(std::uint32_t i) { return i & (block_size - 1); }
-  static std::uint32_t* links_of(T* block) { return reinterpret_cast<std::uint32_t*>(block + block_size); }
+  // Where the link of the object at `place` of `block` is: in the block's array of links
+  // (`apart`), or the object's `next`.
+  static std::uint32_t* link_in(T* block, std::uint32_t place, bool apart)
+  {
+    return apart ? reinterpret_cast<std::uint32_t*>(block + block_size) + place : &block[place].next;
+  }
 
   void new_block(Slot& s)
   {

@@ -735,23 +735,24 @@ private:
 
   void clear_list(int h)
   {
-    take_chains(h, [this](const List_chain& c) { m_pool.release_chain(m_main_slot, c.first); });
+    const std::uint32_t first = m_head[h];
+    std::uint32_t last = first;
+    for(std::uint32_t node = first; node != Window_pool::nil; node = m_chain_nodes[node].next) {
+      m_pool.release_chain(m_main_slot, m_chain_nodes[node].chain.first);
+      last = node;
+    }
+    free_chain_nodes(first, last);
+    m_head[h] = Window_pool::nil;
   }
 
-  // Empties the list of h, calling `f(chain)` for each of its chains, newest first (the order
-  // its windows were in when a list was one chain).
-  template <class F>
-  void take_chains(int h, F f)
+  // Gives the chain nodes from `first` to `last` along their links (none if `first` is nil)
+  // back to the nodes' free list.
+  void free_chain_nodes(std::uint32_t first, std::uint32_t last)
   {
-    for(std::uint32_t node = m_head[h]; node != Window_pool::nil;) {
-      Chain_node& n = m_chain_nodes[node];
-      f(n.chain);
-      const std::uint32_t next = n.next;
-      n.next = m_free_chain_node;
-      m_free_chain_node = node;
-      node = next;
-    }
-    m_head[h] = Window_pool::nil;
+    if(first == Window_pool::nil)
+      return;
+    m_chain_nodes[last].next = m_free_chain_node;
+    m_free_chain_node = first;
   }
 
   // Propagates the scheduled lists, and the lists they schedule, until none is left.
@@ -930,8 +931,8 @@ private:
       buffers.walked.push_back(m_pool.collect_chain(c.first, windows));
       const std::size_t end = windows.size();
       Window** list = windows.data();
-      if(c.trimmed_at >= stale_before)
-        kept = std::copy(list + begin, list + end, list + kept) - list;
+      if(c.trimmed_at >= stale_before) // (when no window was dropped before, they stay where they are)
+        kept = kept == begin ? end : std::size_t(std::copy(list + begin, list + end, list + kept) - list);
       else
         for(std::size_t i = begin; i < end; ++i)
           if(keep_window(*list[i], h, d_from, d_to))
@@ -1025,11 +1026,8 @@ private:
   {
     ++m_statistics.lists_propagated;
     const int h = task.halfedge;
-    if(task.first_node != Window_pool::nil) { // the list's chain nodes are free again
-      m_chain_nodes[task.last_node].next = m_free_chain_node;
-      m_free_chain_node = task.first_node;
-      task.first_node = Window_pool::nil;
-    }
+    free_chain_nodes(task.first_node, task.last_node); // the list's chains are freed
+    task.first_node = Window_pool::nil;
     if(m_recorder && !m_batched)
       record_task(task, m_main_slot);
     if(task.apex_distance < infinity())
