@@ -22,7 +22,7 @@ PHASES = [
     ('unfolding', ['make_child', 'face_crossing', 'apex_crossing', 'distance_to_apex']),
     ('emissions of pseudo-sources', ['compute_emission', 'apply_emission', 'emit_', 'saddle_cone', 'polar_angle']),
     ('list bookkeeping', ['schedule', 'inside_swept', 'add_chain', 'detach', 'merge', 'relax', 'set_distance',
-                          'take_vertex', 'Object_pool', 'Indexed_pool', 'Window_list', 'Window_chain', 'drain',
+                          'take_vertex', 'Object_pool', 'Indexed_pool', 'Run_pool', 'Window_list', 'Window_chain', 'drain',
                           'insert_window', 'note_live_windows', 'for_each_outgoing', 'run()', 'Min_heap',
                           'take_vertices', 'flush_waiting', 'limit()', 'reset_wavefront', 'update_stop']),
 ]
@@ -98,7 +98,7 @@ def phase(chain, fine):
             if 'VTP_solver::propagate' in name:
                 return 'propagate loops (list copy, apex, children)'
         # (a helper by its name, not by the types of its parameters: the pool's walks take vectors)
-        if 'Indexed_pool<' not in name.split('(')[0] and any(k in name for k in HELPERS):
+        if not any(p in name.split('(')[0] for p in ('Indexed_pool<', 'Run_pool<')) and any(k in name for k in HELPERS):
             continue
         for p, keys in PHASES:
             if any(k in name for k in keys):

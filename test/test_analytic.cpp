@@ -390,134 +390,111 @@ TEST(WindowToolkit, OverlapPiecesGoToTheShorterWindow)
   EXPECT_GT(pieces, 20000);
 }
 
-// VTP's window store: objects found again by index across blocks, 64-byte aligned, links kept
-// apart from them, a freed chain given again (in its order) before new objects, the live count
-// and the bytes of the blocks.
-TEST(WindowToolkit, IndexedPoolKeepsObjectsByIndex)
+// VTP's window store: objects made one after the other form runs within a block of 64, found
+// again by index, 64-byte aligned; a make that is not kept leaves its place to the next; two
+// lanes make two runs at once; a block is made in again only once every object in it is freed;
+// the live count and the bytes of the groups.
+TEST(WindowToolkit, RunPoolMakesRunsAndTakesBlocksBack)
 {
   namespace gi = CGAL_ext::Geodesics_3::internal;
-  typedef gi::Indexed_pool<gi::Window> Pool;
+  typedef gi::Run_pool<gi::Window> Pool;
   Pool pool;
-  const std::size_t n = 3 * Pool::block_size + 5;
+  const std::uint32_t b = Pool::block_size;
+  const std::size_t n = 3 * b + 5;
   std::vector<std::uint32_t> index(n);
   for(std::size_t i = 0; i < n; ++i) {
     gi::Window w;
-    w.b0 = double(i);
     w.source = int(i);
-    gi::Window* p = pool.allocate(0, w, index[i]);
-    EXPECT_EQ(reinterpret_cast<std::uintptr_t>(p) % 64, 0u);
-    EXPECT_EQ(&pool[index[i]], p);
+    index[i] = pool.make_copy(0, 0, w);
+    EXPECT_EQ(reinterpret_cast<std::uintptr_t>(&pool[index[i]]) % 64, 0u);
+    if(i > 0)
+      EXPECT_EQ(Pool::continues_run(index[i - 1], 1, index[i]), i % b != 0) << "a run ends with its block, at " << i;
+    std::uint32_t refused = Pool::nil;
+    EXPECT_FALSE(pool.make(0, 0, refused, [](gi::Window&) { return false; }));
+    EXPECT_EQ(refused, Pool::nil);
   }
   EXPECT_EQ(pool.live(), n);
-  EXPECT_EQ(pool.bytes(), 4 * Pool::block_size * (sizeof(gi::Window) + sizeof(std::uint32_t)));
   for(std::size_t i = 0; i < n; ++i)
-    ASSERT_EQ(pool[index[i]].source, int(i));
-  // free every other object as one chain, then take as many again: no new block
-  for(std::size_t i = 0; i + 2 < n; i += 2)
-    pool.link(index[i]) = index[i + 2];
-  const std::size_t chain = (n + 1) / 2;
-  pool.link(index[2 * (chain - 1)]) = Pool::nil;
-  std::vector<gi::Window*> collected;
-  const Pool::Walked_chain walked = pool.collect_chain(index[0], collected);
-  ASSERT_EQ(collected.size(), chain);
-  for(std::size_t i = 0; i < chain; ++i)
-    ASSERT_EQ(collected[i], &pool[index[2 * i]]) << "collected along the links, in their order";
-  for(std::size_t i = 0; i < n; ++i)
-    ASSERT_EQ(pool[index[i]].source, int(i)) << "links are kept apart from the objects";
-  EXPECT_EQ(pool.live(), n) << "collecting frees nothing";
-  pool.free_chain(0, walked);
-  EXPECT_EQ(pool.live(), n - chain);
-  for(std::size_t i = 0; i < chain; ++i) {
-    std::uint32_t again;
-    gi::Window w;
-    w.source = -1;
-    pool.allocate(0, w, again);
-    ASSERT_EQ(again, index[2 * i]) << "a freed chain is given again first, in its order";
-  }
+    ASSERT_EQ(pool[index[i]].source, int(i)) << "a refused make did not take a place";
+  const std::size_t bytes = pool.bytes();
+  EXPECT_GT(bytes, n * sizeof(gi::Window));
+
+  // Two lanes: objects made in turn in each form two runs.
+  std::uint32_t first[2], count[2] = {0, 0};
+  for(int k = 0; k < 10; ++k)
+    for(unsigned lane = 0; lane < 2; ++lane) {
+      const std::uint32_t i = pool.make_copy(0, lane, gi::Window{});
+      if(count[lane] == 0)
+        first[lane] = i;
+      else
+        ASSERT_TRUE(Pool::continues_run(first[lane], count[lane], i)) << "lane " << lane;
+      ++count[lane];
+    }
+  pool.free_run(0, first[0], count[0]);
+  pool.free_run(0, first[1], count[1]);
   EXPECT_EQ(pool.live(), n);
-  EXPECT_EQ(pool.bytes(), 4 * Pool::block_size * (sizeof(gi::Window) + sizeof(std::uint32_t)));
-  for(std::size_t i = 1; i < n; i += 2)
-    EXPECT_EQ(pool[index[i]].source, int(i)) << "objects not freed are untouched";
+
+  // The first block, all but one of its objects freed, is not made in again; with the last
+  // one freed it is (the lanes are given new blocks from those freed first).
+  pool.free_run(0, index[0], b - 1);
+  std::vector<std::uint32_t> made;
+  for(std::uint32_t k = 0; k < 2 * b; ++k)
+    made.push_back(pool.make_copy(0, 0, gi::Window{}));
+  for(std::uint32_t i : made)
+    ASSERT_NE(i / b, index[0] / b) << "a block with an object in use is not made in";
+  pool.free_run(0, index[b - 1], 1);
+  for(std::uint32_t k = 0; k < 2 * b; ++k)
+    made.push_back(pool.make_copy(0, 0, gi::Window{}));
+  EXPECT_NE(std::find_if(made.begin(), made.end(), [&](std::uint32_t i) { return i / b == index[0] / b; }),
+            made.end())
+    << "a block whose objects are all freed is made in again";
+  for(std::uint32_t i : made)
+    pool.free_run(0, i, 1);
+  for(std::size_t i = b; i < n; ++i)
+    pool.free_run(0, index[i], 1);
+  EXPECT_EQ(pool.live(), 0u);
+  // everything freed: as many objects again take no new memory
+  for(std::size_t i = 0; i < n; ++i)
+    pool.free_run(0, pool.make_copy(0, 0, gi::Window{}), 1);
+  EXPECT_EQ(pool.bytes(), bytes);
 }
 
-// With several slots (one per thread), a link is the object's own `next`; a pool that changes
-// its number of slots moves the links of its free lists (from one slot to two, in their order;
-// from two to one, the slot that stays gets every free object), unless objects are in use.
-TEST(WindowToolkit, IndexedPoolKeepsLinksInObjectsWithSeveralSlots)
+// With several slots (one per thread), the blocks that one thread frees reach the other that
+// makes (through the shared blocks), and a pool that goes back to one slot keeps every block:
+// no memory grows while the windows alive stay few.
+TEST(WindowToolkit, RunPoolSharesBlocksBetweenSlots)
 {
 #ifdef CGAL_LINKED_WITH_TBB
   namespace gi = CGAL_ext::Geodesics_3::internal;
-  typedef gi::Indexed_pool<gi::Window> Pool;
+  typedef gi::Run_pool<gi::Window> Pool;
   Pool pool;
-  const std::size_t n = 10;
-  std::vector<std::uint32_t> index(n);
-  auto allocate_all = [&](const char* when) {
-    for(std::size_t i = 0; i < n; ++i) {
-      gi::Window w;
-      w.source = int(i);
-      w.next = gi::no_window;
-      std::uint32_t again;
-      pool.allocate(0, w, again);
-      ASSERT_EQ(again, index[i]) << when << ": a freed chain is given again in its order";
-    }
-  };
-  auto free_all = [&]() {
-    for(std::size_t i = 0; i + 1 < n; ++i)
-      pool.link(index[i]) = index[i + 1];
-    pool.link(index[n - 1]) = Pool::nil;
-    std::vector<gi::Window*> collected;
-    const Pool::Walked_chain walked = pool.collect_chain(index[0], collected);
-    ASSERT_EQ(collected.size(), n);
-    pool.free_chain(0, walked);
-  };
-  for(std::size_t i = 0; i < n; ++i) {
-    gi::Window w;
-    w.next = gi::no_window;
-    pool.allocate(0, w, index[i]);
-  }
-  free_all(); // one slot: the links apart
   tbb::task_arena arena(2);
   arena.execute([&] { pool.use_one_slot_per_thread(true); });
   ASSERT_EQ(pool.number_of_slots(), 2u);
-  allocate_all("moved to the objects");
-  pool.link(index[0]) = index[5];
-  EXPECT_EQ(pool[index[0]].next, index[5]) << "a link is the object's own";
-  free_all();
-  // objects of the second slot's own block, freed there
-  std::vector<std::uint32_t> second(3);
-  for(std::uint32_t& i : second) {
-    gi::Window w;
-    w.next = gi::no_window;
-    pool.allocate(1, w, i);
+  // slot 0 makes, slot 1 frees, many times the objects of a group
+  const std::size_t rounds = 200, per_round = 5 * Pool::block_size;
+  std::vector<std::uint32_t> index(per_round);
+  std::size_t bytes_after_first = 0;
+  for(std::size_t r = 0; r < rounds; ++r) {
+    for(std::uint32_t& i : index)
+      i = pool.make_copy(0, r % 2, gi::Window{});
+    for(std::uint32_t i : index)
+      pool.free_run(1, i, 1);
+    if(r == 0)
+      bytes_after_first = pool.bytes();
   }
-  for(std::uint32_t i : second)
-    pool.free_one(1, i);
   EXPECT_EQ(pool.live(), 0u);
+  EXPECT_LE(pool.bytes(), 2 * bytes_after_first) << "the freed blocks were made in again";
   const std::size_t bytes = pool.bytes();
-  EXPECT_EQ(bytes, 2 * Pool::block_size * (sizeof(gi::Window) + sizeof(std::uint32_t)));
   pool.use_one_slot_per_thread(false);
   ASSERT_EQ(pool.number_of_slots(), 1u);
-  // the slot that stays has every free object: they are given before any new one
-  std::vector<std::uint32_t> all = index, again(n + second.size());
-  all.insert(all.end(), second.begin(), second.end());
-  for(std::uint32_t& i : again) {
-    gi::Window w;
-    w.source = 7;
-    w.next = gi::no_window;
-    pool.allocate(0, w, i);
+  for(std::size_t r = 0; r < rounds; ++r) {
+    for(std::uint32_t& i : index)
+      i = pool.make_copy(0, 0, gi::Window{});
+    for(std::uint32_t i : index)
+      pool.free_run(0, i, 1);
   }
-  std::sort(all.begin(), all.end());
-  std::sort(again.begin(), again.end());
-  EXPECT_EQ(again, all) << "the free objects of both slots, each once";
-  EXPECT_EQ(pool.bytes(), bytes);
-  pool.link(index[0]) = index[5];
-  EXPECT_EQ(pool[index[0]].next, gi::no_window) << "the links are apart again";
-  EXPECT_EQ(pool[index[0]].source, 7);
-  // objects in use (as a run that threw leaves them): the links stay where they are
-  arena.execute([&] { pool.use_one_slot_per_thread(true); });
-  pool.link(index[1]) = index[5];
-  EXPECT_EQ(pool[index[1]].next, gi::no_window) << "the links stay apart while objects are in use";
-  EXPECT_EQ(pool.link(index[1]), index[5]);
+  EXPECT_EQ(pool.bytes(), bytes) << "one slot keeps the blocks of both";
 #else
   GTEST_SKIP() << "TBB is needed for a pool of several slots";
 #endif

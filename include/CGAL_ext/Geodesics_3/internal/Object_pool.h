@@ -11,8 +11,10 @@
 #include <cstdint>
 #include <iterator>
 #include <memory>
+#include <mutex>
 #include <new>
 #include <stdexcept>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL_ext {
@@ -112,267 +114,241 @@ public:
   }
 };
 
-/// A thread's part of an `Indexed_pool`.
+/// A thread's part of a `Run_pool`.
 template <class T>
-struct Indexed_pool_slot
+struct Run_pool_slot
 {
-  static constexpr std::uint32_t nil = 0xFFFFFFFFu; // no object
-  // Objects of a cache line start on one.
-  static constexpr std::size_t block_alignment = 64;
-  static constexpr unsigned block_bits = 12;
+  static constexpr std::uint32_t nil = 0xFFFFFFFFu;
+  static constexpr unsigned lanes = 2;
+  static constexpr unsigned block_bits = 6;
   static constexpr std::uint32_t block_size = 1u << block_bits;
-  // A block holds its objects, then their links (used when they are kept apart).
-  static constexpr std::size_t block_bytes = (sizeof(T) + sizeof(std::uint32_t)) * block_size;
-  struct Free_block
+  static constexpr std::size_t alignment = 64;
+  // Where a lane makes its next objects: its block, and the objects made in it so far.
+  struct Lane
   {
-    void operator()(T* block) const
-    {
-      std::destroy_n(block, block_size);
-      ::operator delete(block, std::align_val_t(block_alignment));
-    }
+    std::uint32_t block = nil;
+    T* start = nullptr;
+    std::uint32_t used = block_size; // (none: a block is entered first)
   };
-  alignas(64) std::vector<std::unique_ptr<T, Free_block>> blocks; // the blocks this slot carved
-  std::uint32_t free = nil;
-  std::uint32_t block = 0; // the number of the block being carved
-  T* block_start = nullptr;  // and its first object
-  std::uint32_t used = block_size;
+  struct Free_group
+  {
+    void operator()(void* memory) const { ::operator delete(memory, std::align_val_t(alignment)); }
+  };
+  alignas(64) Lane lane[lanes];
+  std::vector<std::unique_ptr<void, Free_group>> groups; // the memory of the groups it made
+  std::vector<std::uint32_t> free_blocks; // blocks whose objects were all freed, to make again
+  bool has_group = false;                 // whether it carves blocks from a group of its own:
+  std::uint32_t group = 0;                // that group
+  std::uint32_t group_used = 0;           // and its blocks carved so far
   std::ptrdiff_t live = 0; // may go below zero in one slot: objects are freed where they are used
 };
 
-/// The same storage for objects linked by a 32-bit index (`link(i)`, `nil` at the end) instead
-/// of a pointer. An index names a block of the pool and a place in it; blocks are numbered
-/// across slots (the number taken atomically) and never move, so a thread may follow links into
-/// blocks that another thread carved, once the step that linked them has ended.
+/// Storage of VTP's windows in runs: each thread makes its objects one after the other in
+/// blocks of 64, so that the objects a thread makes in a row for one chain lie side by side (a
+/// *run*, named by its first object's index and its length) and are found without a link. A
+/// block counts its objects not yet freed; the thread that frees the last one takes the block
+/// back, to make new objects in it. Objects are named by a 32-bit index (a group of blocks and a
+/// place in it); groups are numbered across threads (the number taken atomically) and never
+/// move, so a thread may read objects that another thread made, once the step that made them has
+/// ended. Each thread has two *lanes*, each making in its own block, so that it can make two
+/// runs at once (the children of a list on both sides of its face).
 ///
-/// Where a link is kept depends on the number of slots. With one, the links are kept apart
-/// from the objects, at the end of each block: a walk along a chain reads only them (a few kB
-/// that stay in cache) and fetches the objects, far apart in the pool, ahead of their use
-/// (`collect_chain`) instead of one after the other. With several, a link is the object's own
-/// `std::uint32_t next` member: the objects pass from thread to thread, and kept apart, sixteen
-/// links to a cache line, the links of objects that different threads use would share lines,
-/// which the cores would pass to and fro (doc/design.md); chains are then walked side by side
-/// (`prefetch_chains`), so that their fetches overlap.
+/// A run never crosses from one block into the next: `continues_run` says whether a new object
+/// extends a run.
 template <class T>
-class Indexed_pool : public Pool_slots<Indexed_pool_slot<T>>
+class Run_pool : public Pool_slots<Run_pool_slot<T>>
 {
-  using Pool_slots<Indexed_pool_slot<T>>::m_slots;
-  typedef Indexed_pool_slot<T> Slot;
+  using Pool_slots<Run_pool_slot<T>>::m_slots;
+  typedef Run_pool_slot<T> Slot;
 
 public:
   static constexpr std::uint32_t nil = Slot::nil;
+  static constexpr unsigned lanes = Slot::lanes;
   static constexpr unsigned block_bits = Slot::block_bits;
   static constexpr std::uint32_t block_size = Slot::block_size;
-  static constexpr std::uint32_t max_blocks = 1u << (32 - block_bits);
+  static constexpr unsigned group_bits = 6; // blocks a group
+  static constexpr std::uint32_t group_size = 1u << group_bits;
+  static constexpr unsigned group_index_bits = block_bits + group_bits;
+  static constexpr std::uint32_t max_groups = 1u << (32 - group_index_bits);
 
-  // The table of blocks is left uninitialized: only the entries of blocks made are read, and
+  // The table of groups is left uninitialized: only the entries of groups made are read, and
   // the memory of the rest is never touched.
-  Indexed_pool() : m_blocks(new T*[max_blocks]) {}
+  Run_pool() : m_groups(new Group[max_groups]) {}
 
   /// Gives the pool one slot per thread of the task arena the caller runs in when `parallel`
-  /// (`Pool_slots`), and keeps the links where that number of slots wants them when no object is
-  /// in use. The blocks and free objects of slots that go are kept by the first one. Returns the
-  /// calling thread's slot.
+  /// (`Pool_slots`); returns the calling thread's slot. The slots that go give their blocks
+  /// (those whose objects are all freed, and what their lanes did not make) to the first one,
+  /// and so do the threads' shared blocks when one slot is left.
   std::size_t use_one_slot_per_thread(bool parallel)
   {
     const std::size_t count = parallel ? arena_concurrency() : 1;
     for(std::size_t k = count; k < m_slots.size(); ++k) {
-      Slot& first = m_slots[0];
       Slot& s = m_slots[k];
-      std::move(s.blocks.begin(), s.blocks.end(), std::back_inserter(first.blocks));
-      s.blocks.clear();
+      for(typename Slot::Lane& l : s.lane)
+        leave_block(0, l);
+      Slot& first = m_slots[0];
+      first.free_blocks.insert(first.free_blocks.end(), s.free_blocks.begin(), s.free_blocks.end());
+      std::move(s.groups.begin(), s.groups.end(), std::back_inserter(first.groups));
+      s.groups.clear();
+      if(s.has_group)
+        for(std::uint32_t b = s.group_used; b < group_size; ++b)
+          first.free_blocks.push_back((s.group << group_bits) | b);
       first.live += s.live;
-      while(s.free != nil) {
-        const std::uint32_t i = s.free;
-        s.free = link(i);
-        link(i) = first.free;
-        first.free = i;
-      }
     }
-    const std::size_t slot = Pool_slots<Slot>::use_one_slot_per_thread(parallel);
-    const bool apart = m_slots.size() == 1;
-    // (objects still in use, as a run that threw may leave, keep the links where they are: the
-    // layout only costs time)
-    if(apart == m_links_apart || this->live() != 0)
-      return slot;
-    for(Slot& s : m_slots) // the free lists move to the other place of the links
-      for(std::uint32_t i = s.free; i != nil;) {
-        T* block = block_of(i);
-        std::uint32_t& from = *link_in(block, place_of(i), m_links_apart);
-        *link_in(block, place_of(i), apart) = from;
-        i = from;
-      }
-    m_links_apart = apart;
-    return slot;
-  }
-
-  T& operator[](std::uint32_t i) const { return block_of(i)[place_of(i)]; }
-
-  /// The index of the object after object i in its chain (or in the free list), or nil.
-  std::uint32_t& link(std::uint32_t i) const { return *link_in(block_of(i), place_of(i), m_links_apart); }
-
-  /// Fetches the objects of several chains, `cursors[0..count)` their first objects: one object
-  /// of each in turn, so that the reads of the chains overlap (a chain that another thread wrote
-  /// is a chain of cache misses). The cursors are left at nil.
-  void prefetch_chains(std::uint32_t* cursors, std::size_t count) const
-  {
-    for(bool any = true; any;) {
-      any = false;
-      for(std::size_t k = 0; k < count; ++k) {
-        if(cursors[k] == nil)
-          continue;
-        cursors[k] = prefetch_and_follow(cursors[k]);
-        any = true;
-      }
+    if(count == 1) {
+      std::vector<std::uint32_t>& blocks = m_slots[0].free_blocks;
+      blocks.insert(blocks.end(), m_shared_free_blocks.begin(), m_shared_free_blocks.end());
+      m_shared_free_blocks.clear();
     }
+    return Pool_slots<Slot>::use_one_slot_per_thread(parallel);
   }
 
-  /// An object of the slot set to `value`; returns it, and its index in `index`. Its link is
-  /// left as it was, or as `value` has it. (Inlined: GCC leaves it out of line in VTP's
-  /// `propagate`.)
-  CGAL_EXT_ALWAYS_INLINE T* allocate(std::size_t slot, const T& value, std::uint32_t& index)
-  {
-    std::uint32_t* link;
-    return allocate(slot, value, index, link);
-  }
-  /// The same, giving the object's link too.
-  CGAL_EXT_ALWAYS_INLINE T* allocate(std::size_t slot, const T& value, std::uint32_t& index, std::uint32_t*& link)
-  {
-    T* p = allocate(slot, index, link);
-    *p = value;
-    return p;
-  }
-  /// The same, the object left as it was (to be set by the caller).
-  CGAL_EXT_ALWAYS_INLINE T* allocate(std::size_t slot, std::uint32_t& index, std::uint32_t*& link)
+  T& operator[](std::uint32_t i) const { return m_groups[i >> group_index_bits].objects[i & group_mask]; }
+
+  /// Makes an object in the next place of the slot's `lane` by `make(object)` (the object as it
+  /// was left when freed, or default-initialized), and keeps it if `make` returns true: then
+  /// sets `index` to it and returns true. (Inlined: GCC leaves it out of line in VTP's
+  /// `propagate`, which costs a call a window.)
+  template <class Make>
+  CGAL_EXT_ALWAYS_INLINE bool make(std::size_t slot, unsigned lane, std::uint32_t& index, Make make)
   {
     Slot& s = m_slots[slot];
-    T* p;
-    if(s.free != nil) {
-      index = s.free;
-      T* block = block_of(index);
-      p = block + place_of(index);
-      link = link_in(block, place_of(index), m_links_apart);
-      s.free = *link;
-    } else {
-      if(s.used == block_size)
-        new_block(s);
-      index = (s.block << block_bits) | s.used;
-      p = s.block_start + s.used;
-      link = link_in(s.block_start, s.used, m_links_apart);
-      ++s.used;
-    }
+    typename Slot::Lane& l = s.lane[lane];
+    if(l.used == block_size)
+      enter_new_block(slot, l);
+    if(!make(l.start[l.used]))
+      return false;
+    index = (l.block << block_bits) | l.used;
+    ++l.used;
     ++s.live;
-    return p;
+    return true;
+  }
+  /// The same, the object set to `value`; returns its index.
+  std::uint32_t make_copy(std::size_t slot, unsigned lane, const T& value)
+  {
+    std::uint32_t index = nil;
+    make(slot, lane, index, [&](T& object) {
+      object = value;
+      return true;
+    });
+    return index;
   }
 
-  /// A chain walked along its links, to be freed whole by `free_chain`.
-  struct Walked_chain
+  /// Whether an object made at `index` extends the run of `count` objects from `first`.
+  static bool continues_run(std::uint32_t first, std::uint32_t count, std::uint32_t index)
   {
-    std::uint32_t first = nil;
-    std::uint32_t* last_link = nullptr;
-    std::ptrdiff_t count = 0;
-  };
-
-  /// Appends the addresses of the objects from `i` on along their links to `objects`, asking the
-  /// processor to fetch each when the links are apart (their reads then overlap instead of
-  /// waiting for each other); returns what `free_chain` needs.
-  Walked_chain collect_chain(std::uint32_t i, std::vector<T*>& objects) const
-  {
-    if(m_links_apart)
-      return walk_chain<true>(i, [&](T* object) {
-#if defined(__GNUC__)
-        __builtin_prefetch(object);
-#endif
-        objects.push_back(object);
-      });
-    return walk_chain<false>(i, [&](T* object) { objects.push_back(object); });
+    return index == first + count && (index & (block_size - 1)) != 0;
   }
 
-  /// Frees a walked chain into the slot. It joins the free list as it is linked: only its last
-  /// link is written.
-  void free_chain(std::size_t slot, const Walked_chain& chain)
+  /// Frees the run of `count` objects from `first` into the slot (the thread's).
+  void free_run(std::size_t slot, std::uint32_t first, std::uint32_t count)
   {
-    if(chain.first == nil)
-      return;
-    Slot& s = m_slots[slot];
-    *chain.last_link = s.free;
-    s.free = chain.first;
-    s.live -= chain.count;
+    m_slots[slot].live -= std::ptrdiff_t(count);
+    release(slot, first >> block_bits, count);
   }
 
-  /// Frees object i alone into the slot.
-  void free_one(std::size_t slot, std::uint32_t i) { free_one(slot, i, &link(i)); }
-  /// The same, `i_link` its link.
-  void free_one(std::size_t slot, std::uint32_t i, std::uint32_t* i_link)
-  {
-    Slot& s = m_slots[slot];
-    *i_link = s.free;
-    s.free = i;
-    --s.live;
-  }
-
-  /// Frees the objects from `i` on along their links.
-  void release_chain(std::size_t slot, std::uint32_t i)
-  {
-    free_chain(slot, m_links_apart ? walk_chain<true>(i, [](T*) {}) : walk_chain<false>(i, [](T*) {}));
-  }
-
-  std::size_t bytes() const { return std::size_t(m_block_count.load()) * Slot::block_bytes; }
+  std::size_t bytes() const { return std::size_t(m_group_count.load()) * group_bytes; }
 
 private:
-  T* block_of(std::uint32_t i) const { return m_blocks[i >> block_bits]; }
-  // Calls `visit(address)` for the objects from `i` on along their links (it must not change
-  // them); returns the chain's first object, last link and length.
-  template <bool Apart, class Visit>
-  CGAL_EXT_ALWAYS_INLINE Walked_chain walk_chain(std::uint32_t i, Visit visit) const
+  static_assert(std::is_trivially_destructible<T>::value, "the groups' objects are not destroyed");
+  static constexpr std::uint32_t group_mask = (1u << group_index_bits) - 1;
+  static constexpr std::size_t alignment = Slot::alignment;
+  // A group's objects, then each block's count of objects not yet freed (and one while a lane
+  // makes in it).
+  static constexpr std::size_t group_bytes = (std::size_t(1) << group_index_bits) * sizeof(T) +
+                                             group_size * sizeof(std::atomic<std::int32_t>);
+  struct Group
   {
-    Walked_chain chain;
-    chain.first = i;
-    while(i != nil) {
-      T* block = block_of(i);
-      chain.last_link = link_in(block, place_of(i), Apart);
-      visit(block + place_of(i));
-      i = *chain.last_link;
-      ++chain.count;
+    T* objects;
+    std::atomic<std::int32_t>* counts;
+  };
+
+  std::atomic<std::int32_t>& count_of(std::uint32_t block) const
+  {
+    return m_groups[block >> group_bits].counts[block & (group_size - 1)];
+  }
+
+  // Takes `count` from the block's count; the thread that takes it to zero gets the block back.
+  // A thread that has many blocks to make in gives some to the others: a block goes to the
+  // thread that frees its last object, which need not be the one that will need it.
+  void release(std::size_t slot, std::uint32_t block, std::uint32_t count)
+  {
+    if(count_of(block).fetch_sub(std::int32_t(count), std::memory_order_acq_rel) != std::int32_t(count))
+      return;
+    std::vector<std::uint32_t>& blocks = m_slots[slot].free_blocks;
+    blocks.push_back(block);
+    if(blocks.size() >= 2 * shared_batch && m_slots.size() > 1) {
+      std::lock_guard<std::mutex> lock(m_shared_mutex);
+      m_shared_free_blocks.insert(m_shared_free_blocks.end(), blocks.end() - shared_batch, blocks.end());
+      blocks.resize(blocks.size() - shared_batch);
     }
-    return chain;
-  }
-  // A step of the prefetching walks: asks for object i, returns its link.
-  std::uint32_t prefetch_and_follow(std::uint32_t i) const
-  {
-    T* block = block_of(i);
-#if defined(__GNUC__)
-    if(m_links_apart) // (otherwise reading the link fetches the object)
-      __builtin_prefetch(block + place_of(i));
-#endif
-    return *link_in(block, place_of(i), m_links_apart);
-  }
-  static std::uint32_t place_of(std::uint32_t i) { return i & (block_size - 1); }
-  // Where the link of the object at `place` of `block` is: in the block's array of links
-  // (`apart`), or the object's `next`.
-  static std::uint32_t* link_in(T* block, std::uint32_t place, bool apart)
-  {
-    return apart ? reinterpret_cast<std::uint32_t*>(block + block_size) + place : &block[place].next;
   }
 
-  void new_block(Slot& s)
+  // Takes blocks that other threads gave, if any.
+  void take_shared_blocks(std::vector<std::uint32_t>& blocks)
   {
-    const std::uint32_t b = m_block_count.fetch_add(1, std::memory_order_relaxed);
-    if(b >= max_blocks)
+    std::lock_guard<std::mutex> lock(m_shared_mutex);
+    const std::size_t n = std::min(m_shared_free_blocks.size(), shared_batch);
+    blocks.insert(blocks.end(), m_shared_free_blocks.end() - std::ptrdiff_t(n), m_shared_free_blocks.end());
+    m_shared_free_blocks.resize(m_shared_free_blocks.size() - n);
+  }
+
+  // The lane leaves its block: the places it did not make and the lane's own count go.
+  void leave_block(std::size_t slot, typename Slot::Lane& l)
+  {
+    if(l.block != nil)
+      release(slot, l.block, block_size - l.used + 1);
+    l.block = nil;
+    l.used = block_size;
+  }
+
+  void enter_new_block(std::size_t slot, typename Slot::Lane& l)
+  {
+    leave_block(slot, l);
+    Slot& s = m_slots[slot];
+    std::uint32_t block;
+    if(s.free_blocks.empty() && m_slots.size() > 1)
+      take_shared_blocks(s.free_blocks);
+    if(!s.free_blocks.empty()) {
+      block = s.free_blocks.back();
+      s.free_blocks.pop_back();
+    } else {
+      if(!s.has_group || s.group_used == group_size)
+        new_group(s);
+      block = (s.group << group_bits) | s.group_used++;
+    }
+    count_of(block).store(std::int32_t(block_size + 1), std::memory_order_relaxed);
+    l.block = block;
+    l.start = &(*this)[block << block_bits];
+    l.used = 0;
+  }
+
+  void new_group(Slot& s)
+  {
+    const std::uint32_t g = m_group_count.fetch_add(1, std::memory_order_relaxed);
+    if(g >= max_groups)
       throw std::length_error("geodesic windows: more than 2^32 windows alive at once");
-    T* block = static_cast<T*>(::operator new(Slot::block_bytes, std::align_val_t(Slot::block_alignment)));
+    std::unique_ptr<void, typename Slot::Free_group> memory(::operator new(group_bytes, std::align_val_t(alignment)));
+    s.groups.push_back(std::move(memory));
+    T* objects = static_cast<T*>(s.groups.back().get());
     // default-initialized, not zeroed, as in Object_pool: an object is written whole when it is
-    // made (`allocate`, or its caller), and a link before it is read
-    std::uninitialized_default_construct_n(block, block_size);
-    s.blocks.emplace_back(block);
-    m_blocks[b] = block;
-    s.block = b;
-    s.block_start = block;
-    s.used = 0;
+    // made
+    std::uninitialized_default_construct_n(objects, std::size_t(1) << group_index_bits);
+    auto* counts = reinterpret_cast<std::atomic<std::int32_t>*>(objects + (std::size_t(1) << group_index_bits));
+    for(std::uint32_t b = 0; b < group_size; ++b)
+      new(counts + b) std::atomic<std::int32_t>(0);
+    m_groups[g] = Group{objects, counts};
+    s.group = g;
+    s.group_used = 0;
+    s.has_group = true;
   }
 
-  std::unique_ptr<T*[]> m_blocks;
-  bool m_links_apart = true; // one slot
-  std::atomic<std::uint32_t> m_block_count{0};
+  static constexpr std::size_t shared_batch = 16; // blocks
+
+  std::unique_ptr<Group[]> m_groups;
+  std::atomic<std::uint32_t> m_group_count{0};
+  std::mutex m_shared_mutex;
+  std::vector<std::uint32_t> m_shared_free_blocks;
 };
 
 } // namespace internal

@@ -25,53 +25,45 @@ namespace Geodesics_3 {
 namespace internal {
 
 /// Where VTP keeps the windows of its lists.
-typedef Indexed_pool<Window> Window_pool;
-static_assert(Window_pool::nil == no_window, "a chain of windows ends at the pool's nil");
+typedef Run_pool<Window> Window_pool;
 
-/// A chain of windows of a list (its first window in the pool), and the step whose distances of
-/// the edge's end vertices trimmed them (`VTP_solver::next_step`). A list is a few chains, each
-/// made by one propagation or emission.
-struct List_chain
+/// Windows side by side in the pool: `count` from `first` (`Run_pool`).
+struct Window_run
 {
   std::uint32_t first;
+  std::uint32_t count;
+};
+
+/// A chain of windows of a list (a run of the pool), and the step whose distances of the edge's
+/// end vertices trimmed them (`VTP_solver::next_step`). A list is a few chains, each made by
+/// one propagation or emission.
+struct List_chain
+{
+  Window_run run;
   std::uint32_t trimmed_at;
 };
 
-/// Windows of the pool linked one to the next, with the link of the last one (null while there
-/// is none) and their number. The last link is set when the chain is complete (`finish`).
+/// The windows that one propagation makes for one list: runs of the pool, and their number.
 struct Window_list
 {
-  std::uint32_t head = Window_pool::nil;
-  std::uint32_t* end_link = nullptr;
+  std::vector<Window_run> runs;
   std::size_t size = 0;
 
-  void clear() { head = Window_pool::nil, end_link = nullptr, size = 0; }
-  /// Ends the chain (after its last window).
-  void finish()
-  {
-    if(end_link)
-      *end_link = Window_pool::nil;
-  }
-  /// Appends a new window of `pool`, of the thread's `slot`, set by `make(window)` in place, if
-  /// it returns true (otherwise the window goes back to the pool). (Inlined: GCC leaves it out
-  /// of line in `propagate`, which costs a call a window.)
+  void clear() { runs.clear(), size = 0; }
+  /// Appends a new window of `pool`, made in the `lane` of the thread's `slot` by
+  /// `make(window)` in place, if it returns true. (Inlined: GCC leaves it out of line in
+  /// `propagate`, which costs a call a window.)
   template <class Make>
-  CGAL_EXT_ALWAYS_INLINE void push_back_made(Window_pool& pool, std::size_t slot, Make make)
+  CGAL_EXT_ALWAYS_INLINE void push_back_made(Window_pool& pool, std::size_t slot, unsigned lane, Make make)
   {
-    std::uint32_t index, *link;
-    Window* w = pool.allocate(slot, index, link);
-    if(!make(*w)) {
-      pool.free_one(slot, index, link);
+    std::uint32_t index;
+    if(!pool.make(slot, lane, index, make))
       return;
-    }
-    if(end_link) {
-      *end_link = index;
-      ++size;
-    } else {
-      head = index;
-      size = 1;
-    }
-    end_link = link;
+    ++size;
+    if(!runs.empty() && Window_pool::continues_run(runs.back().first, runs.back().count, index))
+      ++runs.back().count;
+    else
+      runs.push_back(Window_run{index, 1});
   }
 };
 
@@ -528,12 +520,12 @@ private:
     }
   }
 
-  // Adds a chain of windows, trimmed at step `trimmed_at`, to the list of half-edge h, and
+  // Adds a run of windows, trimmed at step `trimmed_at`, to the list of half-edge h, and
   // schedules the list when it lies in the swept region (or when every list is being flushed);
   // otherwise it waits. The order of windows in a list does not matter: they are sorted when
   // the list is propagated. Only the list's chain nodes are written, no window: a window is
   // written by the thread that makes it alone.
-  void add_chain(int h, const Window_list& chain, std::uint32_t trimmed_at)
+  void add_chain(int h, Window_run run, std::uint32_t trimmed_at)
   {
     std::uint32_t node = m_free_chain_node;
     if(node != Window_pool::nil)
@@ -542,9 +534,9 @@ private:
       node = std::uint32_t(m_chain_nodes.size());
       m_chain_nodes.emplace_back();
     }
-    m_chain_nodes[node] = Chain_node{List_chain{chain.head, trimmed_at}, m_head[h]};
+    m_chain_nodes[node] = Chain_node{List_chain{run, trimmed_at}, m_head[h]};
     m_head[h] = node;
-    m_statistics.windows_created += chain.size;
+    m_statistics.windows_created += run.count;
     if(m_flushing || inside_swept_region(h))
       schedule(h);
     else if(!(m_list_flags[h] & in_waiting_lists)) {
@@ -636,12 +628,8 @@ private:
       },
       [&](int g, const Window_geometry& geometry) {
         Window w = list_window(geometry, source);
-        if(keep_window(w, g, distance(m_mesh.source(g)), distance(m_mesh.target(g)))) {
-          std::uint32_t index, *link;
-          m_pool.allocate(slot, w, index, link);
-          *link = Window_pool::nil; // alone in its chain, ended by the thread that made it
-          e.windows.push_back({g, index});
-        }
+        if(keep_window(w, g, distance(m_mesh.source(g)), distance(m_mesh.target(g))))
+          e.windows.push_back({g, m_pool.make_copy(slot, 0, w)});
       });
   }
 
@@ -649,12 +637,8 @@ private:
   {
     for(const Vertex_update& r : e.relaxations)
       relax(r.vertex, r.distance, r.source, r.arrival);
-    for(const auto& [g, index] : e.windows) {
-      Window_list chain;
-      chain.head = index;
-      chain.size = 1;
-      add_chain(g, chain, e.trimmed_at);
-    }
+    for(const auto& [g, index] : e.windows)
+      add_chain(g, Window_run{index, 1}, e.trimmed_at);
     note_live_windows(m_pool);
   }
 
@@ -738,7 +722,7 @@ private:
     const std::uint32_t first = m_head[h];
     std::uint32_t last = first;
     for(std::uint32_t node = first; node != Window_pool::nil; node = m_chain_nodes[node].next) {
-      m_pool.release_chain(m_main_slot, m_chain_nodes[node].chain.first);
+      m_pool.free_run(m_main_slot, m_chain_nodes[node].chain.run.first, m_chain_nodes[node].chain.run.count);
       last = node;
     }
     free_chain_nodes(first, last);
@@ -802,18 +786,14 @@ private:
   void propagate_tasks(std::size_t n)
   {
     // Each task reads shared state that no task writes, and writes only itself and its
-    // thread's pool slot. The windows of the tasks of a chunk (at most `list_grain`) are
-    // fetched at once, their chains walked side by side: the chains of a round were written by
-    // any thread, and one chain's links are a chain of cache misses when another core wrote them.
+    // thread's pool slot. The windows of the tasks of a chunk (at most `list_grain`) are asked
+    // for at once: the windows of a round were made by any thread.
     for_each_chunk(m_parallel, n, list_grain, [this](std::size_t begin, std::size_t end, std::size_t slot) {
-      std::vector<std::uint32_t>& cursors = m_list_buffers[slot].cursors;
       for(std::size_t first = begin; first < end; first += list_grain) {
         const std::size_t last = std::min(end, first + list_grain);
-        cursors.clear();
         for(std::size_t i = first; i < last; ++i)
           for(std::uint32_t node = m_tasks[i].first_node; node != Window_pool::nil; node = m_chain_nodes[node].next)
-            cursors.push_back(m_chain_nodes[node].chain.first);
-        m_pool.prefetch_chains(cursors.data(), cursors.size());
+            prefetch_run(m_chain_nodes[node].chain.run);
         for(std::size_t i = first; i < last; ++i)
           propagate(m_tasks[i], slot);
       }
@@ -888,11 +868,21 @@ private:
     std::vector<Window*> windows;
     std::vector<std::size_t> run_starts;
     std::vector<Window*> merged;
-    std::vector<std::uint32_t> extra; // windows allocated for the parts of split windows
+    std::vector<std::uint32_t> extra; // windows made for the parts of split windows
     std::vector<double> crossings; // per window: where its ray to the apex crosses the edge
-    std::vector<Window_pool::Walked_chain> walked; // the list's chains, to be freed
-    std::vector<std::uint32_t> cursors;           // (`propagate_tasks`)
   };
+
+  // Asks the processor for the windows of a run.
+  void prefetch_run(Window_run run) const
+  {
+#if defined(__GNUC__)
+    const Window* w = &m_pool[run.first];
+    for(std::uint32_t k = 0; k < run.count; ++k)
+      __builtin_prefetch(w + k);
+#else
+    (void)run;
+#endif
+  }
 
   // Takes the windows of the task's list across the face of its half-edge. Reads the mesh and
   // the vertex distances; writes only `task` and what belongs to `slot` (the calling thread's):
@@ -911,7 +901,6 @@ private:
     task.apex_arrival = Arrival{};
     windows.clear();
     buffers.extra.clear();
-    buffers.walked.clear();
     const Halfedge_frame f = m_mesh.frame(h);
     const double d_from = m_distance[m_mesh.source(h)];
     const double d_to = m_distance[m_mesh.target(h)];
@@ -928,9 +917,12 @@ private:
       task.last_node = node;
       const List_chain& c = m_chain_nodes[node].chain;
       const std::size_t begin = windows.size();
-      buffers.walked.push_back(m_pool.collect_chain(c.first, windows));
-      const std::size_t end = windows.size();
+      const std::size_t end = begin + c.run.count;
+      windows.resize(end);
       Window** list = windows.data();
+      Window* run = &m_pool[c.run.first];
+      for(std::size_t i = begin; i < end; ++i)
+        list[i] = run++;
       if(c.trimmed_at >= stale_before) // (when no window was dropped before, they stay where they are)
         kept = kept == begin ? end : std::size_t(std::copy(list + begin, list + end, list + kept) - list);
       else
@@ -941,12 +933,10 @@ private:
     }
     if(!windows.empty())
       propagate_windows(task, slot, buffers, f, d_from, d_to);
-    task.to_ac.finish();
-    task.to_cb.finish();
-    for(const Window_pool::Walked_chain& c : buffers.walked)
-      m_pool.free_chain(slot, c);
+    for(std::uint32_t node = task.first_node; node != Window_pool::nil; node = m_chain_nodes[node].next)
+      m_pool.free_run(slot, m_chain_nodes[node].chain.run.first, m_chain_nodes[node].chain.run.count);
     for(std::uint32_t i : buffers.extra)
-      m_pool.free_one(slot, i);
+      m_pool.free_run(slot, i, 1);
   }
 
   // The rest of `propagate` for the list's windows kept, `buffers.windows` (not empty).
@@ -957,10 +947,9 @@ private:
     std::vector<Window*>& windows = buffers.windows;
     sort_by_start(buffers);
     prune_pairs(windows, m_min_clipped_overlap, [&](const Window& right) {
-      std::uint32_t index;
-      Window* p = m_pool.allocate(slot, right, index);
+      const std::uint32_t index = m_pool.make_copy(slot, 0, right);
       buffers.extra.push_back(index);
-      return p;
+      return &m_pool[index];
     });
     if(m_recorder)
       keep_for_record(task, windows);
@@ -1003,7 +992,7 @@ private:
       const double crossing = crossings[i];
       make_children(w, across, std::min(split, crossing), std::max(split, crossing), m_min_window_length,
                     [&](int g, const Window_geometry& geometry, bool onto_ac) CGAL_EXT_ALWAYS_INLINE {
-                      (onto_ac ? task.to_ac : task.to_cb).push_back_made(m_pool, slot, [&](Window& child) {
+                      (onto_ac ? task.to_ac : task.to_cb).push_back_made(m_pool, slot, onto_ac ? 0 : 1, [&](Window& child) {
                         set_list_window(child, geometry, w.source);
                         // A -> C runs from the source of h to the apex, C -> B from the apex to the target
                         return onto_ac ? keep_window(child, g, d_from, d_apex) : keep_window(child, g, d_apex, d_to);
@@ -1032,10 +1021,10 @@ private:
       record_task(task, m_main_slot);
     if(task.apex_distance < infinity())
       relax(m_mesh.apex(h), task.apex_distance, task.apex_source, task.apex_arrival);
-    if(task.to_ac.size)
-      add_chain(task.to_ac_halfedge, task.to_ac, task.trimmed_at);
-    if(task.to_cb.size)
-      add_chain(task.to_cb_halfedge, task.to_cb, task.trimmed_at);
+    for(Window_run run : task.to_ac.runs)
+      add_chain(task.to_ac_halfedge, run, task.trimmed_at);
+    for(Window_run run : task.to_cb.runs)
+      add_chain(task.to_cb_halfedge, run, task.trimmed_at);
   }
 
   // What `merge(task)` will read, asked of the caches a few tasks ahead: the merges are serial

@@ -34,23 +34,17 @@ struct Window_geometry
   double sigma;
 };
 
-/// No window: the end of a chain of windows.
-constexpr std::uint32_t no_window = 0xFFFFFFFFu;
-
 /// A window of a list (VTP keeps its windows in lists per half-edge), with the distances at
 /// the ends of its interval, kept equal to `distance_at(b0)` and `distance_at(b1)` so that
-/// trimming and clipping reuse them, the index of the source its paths come from, and room for
-/// the link to the next window of its chain in VTP's pool (used when several threads share the
-/// pool: a thread that writes a window then writes no line that holds another thread's links):
-/// 64 bytes, the size of a cache line, which the hot loops (walking, sorting and clipping a
-/// list) work on.
+/// trimming and clipping reuse them, and the index of the source its paths come from: 64 bytes
+/// with its padding, the size of a cache line, which the hot loops (sorting and clipping a list)
+/// work on.
 /// (Not `alignas(64)`: windows are passed and copied by value, and GCC notes at every such call
 /// that passing over-aligned values changed ABI; the pool's blocks are aligned.)
 struct Window : Window_geometry
 {
   double d0, d1;
   int source;
-  std::uint32_t next; // the next window of the chain in the pool, or no_window (`Indexed_pool`)
 };
 static_assert(sizeof(Window) == 64, "a list window is one cache line");
 
@@ -123,7 +117,7 @@ inline Arrival apex_arrival(int h, const Window_geometry& w, double p, double cx
 }
 
 /// Sets `w` to a list window of `g`, its end distances computed, its paths from source
-/// `source`, alone in its chain.
+/// `source`.
 inline void set_list_window(Window& w, const Window_geometry& g, int source)
 {
   static_cast<Window_geometry&>(w) = g;
@@ -131,7 +125,6 @@ inline void set_list_window(Window& w, const Window_geometry& g, int source)
   w.d0 = d.first();
   w.d1 = d.second();
   w.source = source;
-  w.next = no_window;
 }
 
 /// The same, returned.
