@@ -22,12 +22,12 @@ PHASES = [
     ('unfolding', ['make_child', 'face_crossing', 'apex_crossing', 'distance_to_apex']),
     ('emissions of pseudo-sources', ['compute_emission', 'apply_emission', 'emit_', 'saddle_cone', 'polar_angle']),
     ('list bookkeeping', ['schedule', 'inside_swept', 'add_chain', 'detach', 'merge', 'relax', 'set_distance',
-                          'take_vertex', 'Object_pool', 'Indexed_pool', 'Run_pool', 'Window_list', 'Window_chain', 'drain',
+                          'take_vertex', 'Object_pool', 'Indexed_pool', 'Run_pool', 'Window_list', 'drain',
                           'insert_window', 'note_live_windows', 'for_each_outgoing', 'run()', 'Min_heap',
                           'take_vertices', 'flush_waiting', 'limit()', 'reset_wavefront', 'update_stop']),
 ]
 HELPERS = ('allocator_traits', 'Double_pair', 'clamp_to', 'square_roots', 'norm2d', 'square_root', '_mm_', 'distance_at(', ' std::max<', ' std::min<', 'std::abs', 'std::sqrt',
-           'std::copysign', 'std::isfinite', 'std::vector<', '__new_allocator', '__normal_iterator',
+           'std::copysign', 'std::isfinite', 'std::__atomic_base', 'std::vector<', '__new_allocator', '__normal_iterator',
            'Mesh_cache::', 'std::operator<', 'std::__and_', 'std::swap', 'std::move', 'std::pair<', 'enable_if',
            '__gnu_cxx::operator', '__ops::')
 
@@ -97,7 +97,7 @@ def phase(chain, fine):
                     return named(p, keys, name)
             if 'VTP_solver::propagate' in name:
                 return 'propagate loops (list copy, apex, children)'
-        # (a helper by its name, not by the types of its parameters: the pool's walks take vectors)
+        # (a helper by its name, not by the types of its parameters: the pool's functions take vectors)
         if not any(p in name.split('(')[0] for p in ('Indexed_pool<', 'Run_pool<')) and any(k in name for k in HELPERS):
             continue
         for p, keys in PHASES:

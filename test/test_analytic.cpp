@@ -460,8 +460,8 @@ TEST(WindowToolkit, RunPoolMakesRunsAndTakesBlocksBack)
 }
 
 // With several slots (one per thread), the blocks that one thread frees reach the other that
-// makes (through the shared blocks), and a pool that goes back to one slot keeps every block:
-// no memory grows while the windows alive stay few.
+// makes (through the shared blocks), and a pool that goes back to one slot, objects of the slot
+// that goes still alive, keeps every block: no memory grows while the windows alive stay few.
 TEST(WindowToolkit, RunPoolSharesBlocksBetweenSlots)
 {
 #ifdef CGAL_LINKED_WITH_TBB
@@ -485,9 +485,17 @@ TEST(WindowToolkit, RunPoolSharesBlocksBetweenSlots)
   }
   EXPECT_EQ(pool.live(), 0u);
   EXPECT_LE(pool.bytes(), 2 * bytes_after_first) << "the freed blocks were made in again";
+  // objects of the second slot still alive, its lanes in the middle of blocks, when it goes:
+  // freed in the first slot, their blocks are made in again
+  std::vector<std::uint32_t> alive;
+  for(int k = 0; k < 70; ++k)
+    alive.push_back(pool.make_copy(1, k % 2, gi::Window{}));
   const std::size_t bytes = pool.bytes();
   pool.use_one_slot_per_thread(false);
   ASSERT_EQ(pool.number_of_slots(), 1u);
+  EXPECT_EQ(pool.live(), alive.size());
+  for(std::uint32_t i : alive)
+    pool.free_run(0, i, 1);
   for(std::size_t r = 0; r < rounds; ++r) {
     for(std::uint32_t& i : index)
       i = pool.make_copy(0, 0, gi::Window{});

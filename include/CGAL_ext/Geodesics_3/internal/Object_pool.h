@@ -21,6 +21,15 @@ namespace CGAL_ext {
 namespace Geodesics_3 {
 namespace internal {
 
+/// Makes room for one more element of `v` before it is needed (so that a push_back that follows
+/// the making of an object cannot throw and lose the object), growing it as push_back would.
+template <class T>
+void reserve_one_more(std::vector<T>& v)
+{
+  if(v.size() == v.capacity())
+    v.reserve(2 * v.size() + 8);
+}
+
 /// What both pools below keep per thread: one slot per thread of the task arena, each with the
 /// count of its objects alive. `Slot` has a `live` member.
 template <class Slot>
@@ -28,8 +37,9 @@ class Pool_slots
 {
 public:
   /// Gives the pool one slot per thread of the task arena the caller runs in when `parallel`,
-  /// one slot otherwise, and returns the calling thread's slot; only with every object freed
-  /// (the objects of the slots that go are freed with their blocks).
+  /// one slot otherwise, and returns the calling thread's slot. (For `Object_pool`: only with
+  /// every object freed, since the objects of the slots that go are freed with their blocks;
+  /// `Run_pool` hands them over first.)
   std::size_t use_one_slot_per_thread(bool parallel)
   {
     m_slots.resize(parallel ? arena_concurrency() : 1);
@@ -169,7 +179,7 @@ public:
   static constexpr unsigned group_bits = 6; // blocks a group
   static constexpr std::uint32_t group_size = 1u << group_bits;
   static constexpr unsigned group_index_bits = block_bits + group_bits;
-  static constexpr std::uint32_t max_groups = 1u << (32 - group_index_bits);
+  static constexpr std::uint32_t max_groups = (1u << (32 - group_index_bits)) - 1; // (nil names no object)
 
   // The table of groups is left uninitialized: only the entries of groups made are read, and
   // the memory of the rest is never touched.
@@ -178,7 +188,8 @@ public:
   /// Gives the pool one slot per thread of the task arena the caller runs in when `parallel`
   /// (`Pool_slots`); returns the calling thread's slot. The slots that go give their blocks
   /// (those whose objects are all freed, and what their lanes did not make) to the first one,
-  /// and so do the threads' shared blocks when one slot is left.
+  /// and so do the threads' shared blocks when one slot is left; with several, the first slot
+  /// shares what it has beyond a few. Objects may be alive: they are freed in any slot.
   std::size_t use_one_slot_per_thread(bool parallel)
   {
     const std::size_t count = parallel ? arena_concurrency() : 1;
@@ -195,10 +206,13 @@ public:
           first.free_blocks.push_back((s.group << group_bits) | b);
       first.live += s.live;
     }
+    std::vector<std::uint32_t>& blocks = m_slots[0].free_blocks;
     if(count == 1) {
-      std::vector<std::uint32_t>& blocks = m_slots[0].free_blocks;
       blocks.insert(blocks.end(), m_shared_free_blocks.begin(), m_shared_free_blocks.end());
       m_shared_free_blocks.clear();
+    } else if(blocks.size() > shared_batch) { // (the others would make new groups beside them)
+      m_shared_free_blocks.insert(m_shared_free_blocks.end(), blocks.begin() + shared_batch, blocks.end());
+      blocks.resize(shared_batch);
     }
     return Pool_slots<Slot>::use_one_slot_per_thread(parallel);
   }
@@ -325,10 +339,14 @@ private:
 
   void new_group(Slot& s)
   {
-    const std::uint32_t g = m_group_count.fetch_add(1, std::memory_order_relaxed);
-    if(g >= max_groups)
-      throw std::length_error("geodesic windows: more than 2^32 windows alive at once");
     std::unique_ptr<void, typename Slot::Free_group> memory(::operator new(group_bytes, std::align_val_t(alignment)));
+    reserve_one_more(s.groups);
+    // (numbered once made, so that bytes() counts only groups that exist)
+    const std::uint32_t g = m_group_count.fetch_add(1, std::memory_order_relaxed);
+    if(g >= max_groups) {
+      m_group_count.fetch_sub(1, std::memory_order_relaxed);
+      throw std::length_error("geodesic windows: the pool's 2^32 places are used up");
+    }
     s.groups.push_back(std::move(memory));
     T* objects = static_cast<T*>(s.groups.back().get());
     // default-initialized, not zeroed, as in Object_pool: an object is written whole when it is
@@ -346,8 +364,9 @@ private:
   static constexpr std::size_t shared_batch = 16; // blocks
 
   std::unique_ptr<Group[]> m_groups;
-  std::atomic<std::uint32_t> m_group_count{0};
-  std::mutex m_shared_mutex;
+  // (on lines of their own: every thread reads m_groups and m_slots at every object)
+  alignas(64) std::atomic<std::uint32_t> m_group_count{0};
+  alignas(64) std::mutex m_shared_mutex;
   std::vector<std::uint32_t> m_shared_free_blocks;
 };
 

@@ -36,22 +36,28 @@ struct Window_run
 
 /// A chain of windows of a list (a run of the pool), and the step whose distances of the edge's
 /// end vertices trimmed them (`VTP_solver::next_step`). A list is a few chains, each made by
-/// one propagation or emission.
+/// one propagation (one run, or two when its block filled up) or emission.
 struct List_chain
 {
   Window_run run;
   std::uint32_t trimmed_at;
 };
 
-/// The windows that one propagation makes for one list: runs of the pool, and their number.
+/// The windows that one propagation makes for one list: runs of the pool (the last one, still
+/// growing, kept here rather than in the vector, which another thread's vector may sit beside),
+/// and their number.
 struct Window_list
 {
-  std::vector<Window_run> runs;
+  std::vector<Window_run> earlier_runs;
+  Window_run last_run{0, 0};
   std::size_t size = 0;
 
-  void clear() { runs.clear(), size = 0; }
+  void clear() { earlier_runs.clear(), last_run.count = 0, size = 0; }
+  /// Makes room for the runs of `n` windows made in a lane of their own.
+  void reserve(std::size_t n) { earlier_runs.reserve(n / Window_pool::block_size + 1); }
   /// Appends a new window of `pool`, made in the `lane` of the thread's `slot` by
-  /// `make(window)` in place, if it returns true. (Inlined: GCC leaves it out of line in
+  /// `make(window)` in place, if it returns true; room for its run was made (`reserve`), so that
+  /// nothing throws once the window is made. (Inlined: GCC leaves it out of line in
   /// `propagate`, which costs a call a window.)
   template <class Make>
   CGAL_EXT_ALWAYS_INLINE void push_back_made(Window_pool& pool, std::size_t slot, unsigned lane, Make make)
@@ -60,10 +66,22 @@ struct Window_list
     if(!pool.make(slot, lane, index, make))
       return;
     ++size;
-    if(!runs.empty() && Window_pool::continues_run(runs.back().first, runs.back().count, index))
-      ++runs.back().count;
-    else
-      runs.push_back(Window_run{index, 1});
+    if(Window_pool::continues_run(last_run.first, last_run.count, index)) {
+      ++last_run.count;
+      return;
+    }
+    if(last_run.count)
+      earlier_runs.push_back(last_run);
+    last_run = Window_run{index, 1};
+  }
+  /// Calls `f(run)` for the runs, the last made first.
+  template <class F>
+  void for_each_run_backwards(F f) const
+  {
+    if(last_run.count)
+      f(last_run);
+    for(auto r = earlier_runs.rbegin(); r != earlier_runs.rend(); ++r)
+      f(*r);
   }
 };
 
@@ -628,8 +646,10 @@ private:
       },
       [&](int g, const Window_geometry& geometry) {
         Window w = list_window(geometry, source);
-        if(keep_window(w, g, distance(m_mesh.source(g)), distance(m_mesh.target(g))))
+        if(keep_window(w, g, distance(m_mesh.source(g)), distance(m_mesh.target(g)))) {
+          reserve_one_more(e.windows);
           e.windows.push_back({g, m_pool.make_copy(slot, 0, w)});
+        }
       });
   }
 
@@ -947,6 +967,7 @@ private:
     std::vector<Window*>& windows = buffers.windows;
     sort_by_start(buffers);
     prune_pairs(windows, m_min_clipped_overlap, [&](const Window& right) {
+      reserve_one_more(buffers.extra);
       const std::uint32_t index = m_pool.make_copy(slot, 0, right);
       buffers.extra.push_back(index);
       return &m_pool[index];
@@ -983,6 +1004,8 @@ private:
 
     const double d_apex = std::min(m_distance[m_mesh.apex(h)], best);
     const Face_crossing across = face_crossing(m_mesh, h, f);
+    task.to_ac.reserve(n); // (a window has at most one child on each side)
+    task.to_cb.reserve(n);
     task.to_ac_halfedge = across.to_ac;
     task.to_cb_halfedge = across.to_cb;
     for(std::size_t i = 0; i < n; ++i) {
@@ -1021,10 +1044,10 @@ private:
       record_task(task, m_main_slot);
     if(task.apex_distance < infinity())
       relax(m_mesh.apex(h), task.apex_distance, task.apex_source, task.apex_arrival);
-    for(Window_run run : task.to_ac.runs)
-      add_chain(task.to_ac_halfedge, run, task.trimmed_at);
-    for(Window_run run : task.to_cb.runs)
-      add_chain(task.to_cb_halfedge, run, task.trimmed_at);
+    // (the last run first: a list is read from its newest node, so that its windows come in the
+    // order they were made, as when they are one run)
+    task.to_ac.for_each_run_backwards([&](Window_run run) { add_chain(task.to_ac_halfedge, run, task.trimmed_at); });
+    task.to_cb.for_each_run_backwards([&](Window_run run) { add_chain(task.to_cb_halfedge, run, task.trimmed_at); });
   }
 
   // What `merge(task)` will read, asked of the caches a few tasks ahead: the merges are serial
