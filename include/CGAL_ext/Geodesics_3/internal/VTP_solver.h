@@ -932,25 +932,26 @@ private:
     const std::uint32_t stale_before = m_window_limit < infinity() || out_of_steps()
                                          ? std::numeric_limits<std::uint32_t>::max()
                                          : std::max(m_set_at[m_mesh.source(h)], m_set_at[m_mesh.target(h)]);
-    std::size_t kept = 0;
+    std::size_t count = 0;
     for(std::uint32_t node = task.first_node; node != Window_pool::nil; node = m_chain_nodes[node].next) {
       task.last_node = node;
-      const List_chain& c = m_chain_nodes[node].chain;
-      const std::size_t begin = windows.size();
-      const std::size_t end = begin + c.run.count;
-      windows.resize(end);
-      Window** list = windows.data();
-      Window* run = &m_pool[c.run.first];
-      for(std::size_t i = begin; i < end; ++i)
-        list[i] = run++;
-      if(c.trimmed_at >= stale_before) // (when no window was dropped before, they stay where they are)
-        kept = kept == begin ? end : std::size_t(std::copy(list + begin, list + end, list + kept) - list);
-      else
-        for(std::size_t i = begin; i < end; ++i)
-          if(keep_window(*list[i], h, d_from, d_to))
-            list[kept++] = list[i];
-      windows.resize(kept);
+      count += m_chain_nodes[node].chain.run.count;
     }
+    windows.resize(count);
+    Window** list = windows.data();
+    std::size_t kept = 0;
+    for(std::uint32_t node = task.first_node; node != Window_pool::nil; node = m_chain_nodes[node].next) {
+      const List_chain& c = m_chain_nodes[node].chain;
+      Window* const run = &m_pool[c.run.first];
+      if(c.trimmed_at >= stale_before)
+        for(std::uint32_t i = 0; i < c.run.count; ++i)
+          list[kept++] = run + i;
+      else
+        for(std::uint32_t i = 0; i < c.run.count; ++i)
+          if(keep_window(run[i], h, d_from, d_to))
+            list[kept++] = run + i;
+    }
+    windows.resize(kept);
     if(!windows.empty())
       propagate_windows(task, slot, buffers, f, d_from, d_to);
     for(std::uint32_t node = task.first_node; node != Window_pool::nil; node = m_chain_nodes[node].next)
