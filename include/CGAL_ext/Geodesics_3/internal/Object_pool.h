@@ -132,6 +132,8 @@ struct Run_pool_slot
   static constexpr unsigned lanes = 2;
   static constexpr unsigned block_bits = 6;
   static constexpr std::uint32_t block_size = 1u << block_bits;
+  static constexpr unsigned group_bits = 6; // blocks a group
+  static constexpr std::uint32_t group_size = 1u << group_bits;
   static constexpr std::size_t alignment = 64;
   // Where a lane makes its next objects: its block, and the objects made in it so far.
   struct Lane
@@ -147,9 +149,8 @@ struct Run_pool_slot
   alignas(64) Lane lane[lanes];
   std::vector<std::unique_ptr<void, Free_group>> groups; // the memory of the groups it made
   std::vector<std::uint32_t> free_blocks; // blocks whose objects were all freed, to make again
-  bool has_group = false;                 // whether it carves blocks from a group of its own:
-  std::uint32_t group = 0;                // that group
-  std::uint32_t group_used = 0;           // and its blocks carved so far
+  std::uint32_t group = 0;                // the group it carves blocks from
+  std::uint32_t group_used = group_size;  // and its blocks carved so far (all: none to carve)
   std::ptrdiff_t live = 0; // may go below zero in one slot: objects are freed where they are used
 };
 
@@ -176,8 +177,8 @@ public:
   static constexpr unsigned lanes = Slot::lanes;
   static constexpr unsigned block_bits = Slot::block_bits;
   static constexpr std::uint32_t block_size = Slot::block_size;
-  static constexpr unsigned group_bits = 6; // blocks a group
-  static constexpr std::uint32_t group_size = 1u << group_bits;
+  static constexpr unsigned group_bits = Slot::group_bits;
+  static constexpr std::uint32_t group_size = Slot::group_size;
   static constexpr unsigned group_index_bits = block_bits + group_bits;
   static constexpr std::uint32_t max_groups = (1u << (32 - group_index_bits)) - 1; // (nil names no object)
 
@@ -201,9 +202,8 @@ public:
       first.free_blocks.insert(first.free_blocks.end(), s.free_blocks.begin(), s.free_blocks.end());
       std::move(s.groups.begin(), s.groups.end(), std::back_inserter(first.groups));
       s.groups.clear();
-      if(s.has_group)
-        for(std::uint32_t b = s.group_used; b < group_size; ++b)
-          first.free_blocks.push_back((s.group << group_bits) | b);
+      for(std::uint32_t b = s.group_used; b < group_size; ++b)
+        first.free_blocks.push_back((s.group << group_bits) | b);
       first.live += s.live;
     }
     std::vector<std::uint32_t>& blocks = m_slots[0].free_blocks;
@@ -327,7 +327,7 @@ private:
       block = s.free_blocks.back();
       s.free_blocks.pop_back();
     } else {
-      if(!s.has_group || s.group_used == group_size)
+      if(s.group_used == group_size)
         new_group(s);
       block = (s.group << group_bits) | s.group_used++;
     }
@@ -358,7 +358,6 @@ private:
     m_groups[g] = Group{objects, counts};
     s.group = g;
     s.group_used = 0;
-    s.has_group = true;
   }
 
   static constexpr std::size_t shared_batch = 16; // blocks

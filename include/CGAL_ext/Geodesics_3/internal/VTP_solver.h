@@ -44,15 +44,14 @@ struct List_chain
 };
 
 /// The windows that one propagation makes for one list: runs of the pool (the last one, still
-/// growing, kept here rather than in the vector, which another thread's vector may sit beside),
-/// and their number.
+/// growing, kept here rather than in the vector, which another thread's vector may sit beside).
 struct Window_list
 {
   std::vector<Window_run> earlier_runs;
   Window_run last_run{0, 0};
-  std::size_t size = 0;
 
-  void clear() { earlier_runs.clear(), last_run.count = 0, size = 0; }
+  void clear() { earlier_runs.clear(), last_run.count = 0; }
+  bool empty() const { return last_run.count == 0; }
   /// Makes room for the runs of `n` windows made in a lane of their own.
   void reserve(std::size_t n) { earlier_runs.reserve(n / Window_pool::block_size + 1); }
   /// Appends a new window of `pool`, made in the `lane` of the thread's `slot` by
@@ -65,7 +64,6 @@ struct Window_list
     std::uint32_t index;
     if(!pool.make(slot, lane, index, make))
       return;
-    ++size;
     if(Window_pool::continues_run(last_run.first, last_run.count, index)) {
       ++last_run.count;
       return;
@@ -740,13 +738,20 @@ private:
   void clear_list(int h)
   {
     const std::uint32_t first = m_head[h];
+    free_chain_nodes(first, free_runs(first, m_main_slot));
+    m_head[h] = Window_pool::nil;
+  }
+
+  // Frees the windows of the chains from node `first` on into the pool's `slot`; returns the
+  // last node (nil if `first` is).
+  std::uint32_t free_runs(std::uint32_t first, std::size_t slot)
+  {
     std::uint32_t last = first;
     for(std::uint32_t node = first; node != Window_pool::nil; node = m_chain_nodes[node].next) {
-      m_pool.free_run(m_main_slot, m_chain_nodes[node].chain.run.first, m_chain_nodes[node].chain.run.count);
+      m_pool.free_run(slot, m_chain_nodes[node].chain.run.first, m_chain_nodes[node].chain.run.count);
       last = node;
     }
-    free_chain_nodes(first, last);
-    m_head[h] = Window_pool::nil;
+    return last;
   }
 
   // Gives the chain nodes from `first` to `last` along their links (none if `first` is nil)
@@ -954,8 +959,7 @@ private:
     windows.resize(kept);
     if(!windows.empty())
       propagate_windows(task, slot, buffers, f, d_from, d_to);
-    for(std::uint32_t node = task.first_node; node != Window_pool::nil; node = m_chain_nodes[node].next)
-      m_pool.free_run(slot, m_chain_nodes[node].chain.run.first, m_chain_nodes[node].chain.run.count);
+    free_runs(task.first_node, slot);
     for(std::uint32_t i : buffers.extra)
       m_pool.free_run(slot, i, 1);
   }
@@ -1064,7 +1068,7 @@ private:
       __builtin_prefetch(&m_is_taken[std::size_t(v)]);
     for(const auto& [g, chain] : {std::make_pair(task.to_ac_halfedge, &task.to_ac),
                                   std::make_pair(task.to_cb_halfedge, &task.to_cb)})
-      if(chain->size) {
+      if(!chain->empty()) {
         __builtin_prefetch(&m_head[std::size_t(g)]);
         __builtin_prefetch(&m_list_flags[std::size_t(g)]);
       }
