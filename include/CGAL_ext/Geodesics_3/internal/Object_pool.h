@@ -15,6 +15,7 @@
 #include <new>
 #include <stdexcept>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace CGAL_ext {
@@ -29,6 +30,34 @@ void reserve_one_more(std::vector<T>& v)
   if(v.size() == v.capacity())
     v.reserve(2 * v.size() + 8);
 }
+
+/// An allocator that leaves the elements a container adds without a value uninitialized (for
+/// trivial types: `std::vector::resize` then writes nothing), for buffers whose every element is
+/// written before it is read.
+template <class T>
+struct Uninitialized_allocator : std::allocator<T>
+{
+  template <class U>
+  struct rebind
+  {
+    typedef Uninitialized_allocator<U> other;
+  };
+  Uninitialized_allocator() = default;
+  template <class U>
+  Uninitialized_allocator(const Uninitialized_allocator<U>&) noexcept
+  {
+  }
+  template <class U>
+  void construct(U* p) noexcept(std::is_nothrow_default_constructible<U>::value)
+  {
+    ::new(static_cast<void*>(p)) U;
+  }
+  template <class U, class... Args>
+  void construct(U* p, Args&&... args)
+  {
+    ::new(static_cast<void*>(p)) U(std::forward<Args>(args)...);
+  }
+};
 
 /// What both pools below keep per thread: one slot per thread of the task arena, each with the
 /// count of its objects alive. `Slot` has a `live` member.

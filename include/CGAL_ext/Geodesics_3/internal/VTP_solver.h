@@ -27,6 +27,10 @@ namespace internal {
 /// Where VTP keeps the windows of its lists.
 typedef Run_pool<Window> Window_pool;
 
+/// A list's windows where they are in the pool (the buffer of `VTP_solver::propagate`, filled
+/// whole before it is read).
+typedef std::vector<Window*, Uninitialized_allocator<Window*>> Window_pointers;
+
 /// Windows side by side in the pool: `count` from `first` (`Run_pool`).
 struct Window_run
 {
@@ -53,7 +57,12 @@ struct Window_list
   void clear() { earlier_runs.clear(), last_run.count = 0; }
   bool empty() const { return last_run.count == 0; }
   /// Makes room for the runs of `n` windows made in a lane of their own.
-  void reserve(std::size_t n) { earlier_runs.reserve(n / Window_pool::block_size + 1); }
+  void reserve(std::size_t n)
+  {
+    const std::size_t runs = n / Window_pool::block_size + 1;
+    if(earlier_runs.capacity() < runs) // (vector::reserve is a call even when it does nothing)
+      earlier_runs.reserve(runs);
+  }
   /// Appends a new window of `pool`, made in the `lane` of the thread's `slot` by
   /// `make(window)` in place, if it returns true; room for its run was made (`reserve`), so that
   /// nothing throws once the window is made. (Inlined: GCC leaves it out of line in
@@ -890,9 +899,9 @@ private:
   // at each window they add.
   struct alignas(64) List_buffers
   {
-    std::vector<Window*> windows;
+    Window_pointers windows;
     std::vector<std::size_t> run_starts;
-    std::vector<Window*> merged;
+    Window_pointers merged;
     std::vector<std::uint32_t> extra; // windows made for the parts of split windows
     std::vector<double> crossings; // per window: where its ray to the apex crosses the edge
   };
@@ -917,7 +926,7 @@ private:
   {
     const int h = task.halfedge;
     List_buffers& buffers = m_list_buffers[slot];
-    std::vector<Window*>& windows = buffers.windows;
+    Window_pointers& windows = buffers.windows;
     task.to_ac.clear();
     task.to_cb.clear();
     task.trimmed_at = m_step;
@@ -969,7 +978,7 @@ private:
                          double d_from, double d_to)
   {
     const int h = task.halfedge;
-    std::vector<Window*>& windows = buffers.windows;
+    Window_pointers& windows = buffers.windows;
     sort_by_start(buffers);
     prune_pairs(windows, m_min_clipped_overlap, [&](const Window& right) {
       reserve_one_more(buffers.extra);
@@ -1018,19 +1027,23 @@ private:
       if(is_empty(w))
         continue;
       const double crossing = crossings[i];
-      make_children(w, across, std::min(split, crossing), std::max(split, crossing), m_min_window_length,
-                    [&](int g, const Window_geometry& geometry, bool onto_ac) CGAL_EXT_ALWAYS_INLINE {
-                      (onto_ac ? task.to_ac : task.to_cb).push_back_made(m_pool, slot, onto_ac ? 0 : 1, [&](Window& child) {
-                        set_list_window(child, geometry, w.source);
-                        // A -> C runs from the source of h to the apex, C -> B from the apex to the target
-                        return onto_ac ? keep_window(child, g, d_from, d_apex) : keep_window(child, g, d_apex, d_to);
-                      });
-                    });
+      // (each child made in its place in the pool, where it stays if it is kept)
+      for_each_child_part(
+        w, across, std::min(split, crossing), std::max(split, crossing),
+        [&](int g, bool onto_ac, double lo, double hi, const Child_edge& e) CGAL_EXT_ALWAYS_INLINE {
+          (onto_ac ? task.to_ac : task.to_cb).push_back_made(m_pool, slot, onto_ac ? 0 : 1, [&](Window& child) {
+            if(!make_child(w, lo, hi, e, m_min_window_length, child))
+              return false;
+            finish_list_window(child, w.source);
+            // A -> C runs from the source of h to the apex, C -> B from the apex to the target
+            return onto_ac ? keep_window(child, g, d_from, d_apex) : keep_window(child, g, d_apex, d_to);
+          });
+        });
     }
   }
 
   // Out of line: inlined, its copy made GCC leave the list's sort out of line (+1 % instructions).
-  CGAL_EXT_NOINLINE static void keep_for_record(List_task& task, const std::vector<Window*>& windows)
+  CGAL_EXT_NOINLINE static void keep_for_record(List_task& task, const Window_pointers& windows)
   {
     task.propagated.clear();
     for(const Window* w : windows)
@@ -1083,7 +1096,7 @@ private:
   // in place, empty (`is_empty`): it makes no child, and the loops after skip it, which costs
   // less than closing the gaps.
   template <class Make_room>
-  static void prune_pairs(std::vector<Window*>& windows, double min_overlap, Make_room make_room)
+  static void prune_pairs(Window_pointers& windows, double min_overlap, Make_room make_room)
   {
     if(windows.size() < 2)
       return;
@@ -1126,7 +1139,7 @@ private:
   // have many). Stable, as the order of equal starts is the list's.
   static void sort_by_start(List_buffers& buffers)
   {
-    std::vector<Window*>& windows = buffers.windows;
+    Window_pointers& windows = buffers.windows;
     const std::size_t n = windows.size();
     // (the last start kept at hand: read through the pointers, it would be loaded again)
     double last = windows[0]->b0;

@@ -116,15 +116,21 @@ inline Arrival apex_arrival(int h, const Window_geometry& w, double p, double cx
   return p > w.b0 && p < w.b1 ? arrival_from(h, w.sx, w.sy, cx, cy) : arrival_from(h, p, 0., cx, cy);
 }
 
-/// Sets `w` to a list window of `g`, its end distances computed, its paths from source
-/// `source`.
-inline void set_list_window(Window& w, const Window_geometry& g, int source)
+/// Makes `w`, whose geometry is set, a list window: its end distances computed, its paths from
+/// source `source`.
+inline void finish_list_window(Window& w, int source)
 {
-  static_cast<Window_geometry&>(w) = g;
-  const Double_pair d = distance_at(g, Double_pair(g.b0, g.b1));
+  const Double_pair d = distance_at(w, Double_pair(w.b0, w.b1));
   w.d0 = d.first();
   w.d1 = d.second();
   w.source = source;
+}
+
+/// Sets `w` to a list window of `g` (`finish_list_window`).
+inline void set_list_window(Window& w, const Window_geometry& g, int source)
+{
+  static_cast<Window_geometry&>(w) = g;
+  finish_list_window(w, source);
 }
 
 /// The same, returned.
@@ -472,24 +478,37 @@ inline Face_crossing face_crossing(const Mesh_cache& m, int h, const Halfedge_fr
                        Child_edge{f.apex_x, f.apex_y, (f.length - f.apex_x) / l_cb, -f.apex_y / l_cb, l_cb}};
 }
 
-/// The children of `w` across the face: the rays through [b0, min(b1, ac_end)] onto A -> C and
-/// those through [max(b0, cb_start), b1] onto C -> B. `add(halfedge, child, onto_ac)` receives
-/// each child at least `min_length` long, in the frame of the half-edge beyond.
+/// The parts of `w` that cross the face onto an edge with a face beyond: the rays through
+/// [b0, min(b1, ac_end)] onto A -> C and those through [max(b0, cb_start), b1] onto C -> B, each
+/// non-empty one given as `part(halfedge beyond, onto_ac, lo, hi, edge)`.
+template <class Part>
+CGAL_EXT_ALWAYS_INLINE inline void for_each_child_part(const Window_geometry& w, const Face_crossing& c, double ac_end,
+                                                       double cb_start, Part part)
+{
+  if(c.to_ac >= 0) {
+    const double hi = std::min(w.b1, ac_end);
+    if(hi > w.b0)
+      part(c.to_ac, true, w.b0, hi, c.ac);
+  }
+  if(c.to_cb >= 0) {
+    const double lo = std::max(w.b0, cb_start);
+    if(w.b1 > lo)
+      part(c.to_cb, false, lo, w.b1, c.cb);
+  }
+}
+
+/// The children of `w` across the face (`for_each_child_part`): `add(halfedge, child, onto_ac)`
+/// receives each child at least `min_length` long, in the frame of the half-edge beyond.
 template <class Add>
 CGAL_EXT_ALWAYS_INLINE inline void make_children(const Window_geometry& w, const Face_crossing& c, double ac_end,
                                                  double cb_start, double min_length, Add add)
 {
   Window_geometry child;
-  if(c.to_ac >= 0) {
-    const double hi = std::min(w.b1, ac_end);
-    if(hi > w.b0 && make_child(w, w.b0, hi, c.ac, min_length, child))
-      add(c.to_ac, child, true);
-  }
-  if(c.to_cb >= 0) {
-    const double lo = std::max(w.b0, cb_start);
-    if(w.b1 > lo && make_child(w, lo, w.b1, c.cb, min_length, child))
-      add(c.to_cb, child, false);
-  }
+  for_each_child_part(w, c, ac_end, cb_start,
+                      [&](int g, bool onto_ac, double lo, double hi, const Child_edge& e) CGAL_EXT_ALWAYS_INLINE {
+                        if(make_child(w, lo, hi, e, min_length, child))
+                          add(g, child, onto_ac);
+                      });
 }
 
 } // namespace internal
