@@ -33,7 +33,8 @@ void reserve_one_more(std::vector<T>& v)
 
 /// An allocator that leaves the elements a container adds without a value uninitialized (for
 /// trivial types: `std::vector::resize` then writes nothing), for buffers whose every element is
-/// written before it is read.
+/// written before it is read. So `vector(n)`, `resize(n)` and `emplace_back()` give elements of
+/// no value (`resize(n, value)`, `insert` and `push_back` still copy theirs).
 template <class T>
 struct Uninitialized_allocator : std::allocator<T>
 {

@@ -27,8 +27,8 @@ namespace internal {
 /// Where VTP keeps the windows of its lists.
 typedef Run_pool<Window> Window_pool;
 
-/// A list's windows where they are in the pool (the buffer of `VTP_solver::propagate`, filled
-/// whole before it is read).
+/// A list's windows where they are in the pool (`VTP_solver`'s buffers for a list and for the
+/// passes of its sort, each filled whole before it is read).
 typedef std::vector<Window*, Uninitialized_allocator<Window*>> Window_pointers;
 
 /// Windows side by side in the pool: `count` from `first` (`Run_pool`).
