@@ -947,10 +947,8 @@ private:
                                          ? std::numeric_limits<std::uint32_t>::max()
                                          : std::max(m_set_at[m_mesh.source(h)], m_set_at[m_mesh.target(h)]);
     std::size_t count = 0;
-    for(std::uint32_t node = task.first_node; node != Window_pool::nil; node = m_chain_nodes[node].next) {
-      task.last_node = node;
+    for(std::uint32_t node = task.first_node; node != Window_pool::nil; node = m_chain_nodes[node].next)
       count += m_chain_nodes[node].chain.run.count;
-    }
     windows.resize(count);
     Window** list = windows.data();
     std::size_t kept = 0;
@@ -968,7 +966,7 @@ private:
     windows.resize(kept);
     if(!windows.empty())
       propagate_windows(task, slot, buffers, f, d_from, d_to);
-    free_runs(task.first_node, slot);
+    task.last_node = free_runs(task.first_node, slot);
     for(std::uint32_t i : buffers.extra)
       m_pool.free_run(slot, i, 1);
   }

@@ -126,18 +126,12 @@ inline void finish_list_window(Window& w, int source)
   w.source = source;
 }
 
-/// Sets `w` to a list window of `g` (`finish_list_window`).
-inline void set_list_window(Window& w, const Window_geometry& g, int source)
-{
-  static_cast<Window_geometry&>(w) = g;
-  finish_list_window(w, source);
-}
-
-/// The same, returned.
+/// The list window of `g` (`finish_list_window`).
 inline Window list_window(const Window_geometry& g, int source)
 {
   Window w;
-  set_list_window(w, g, source);
+  static_cast<Window_geometry&>(w) = g;
+  finish_list_window(w, source);
   return w;
 }
 
