@@ -4,6 +4,7 @@
 
 #include <CGAL_ext/Geodesics_3/Geodesic_error.h>
 #include <CGAL_ext/Geodesics_3/Tolerances.h>
+#include <CGAL_ext/Geodesics_3/internal/Inlining.h>
 #include <CGAL_ext/Geodesics_3/internal/Mesh_cache.h>
 #include <CGAL_ext/Geodesics_3/internal/Window.h>
 
@@ -213,7 +214,8 @@ void emit_vertex_windows(const Mesh_cache& m, int v, double sigma, Relax relax, 
     cone = nullptr;
   std::size_t k = 0;
   double around = 0; // the angle from m.first_outgoing[v] to h
-  m.for_each_outgoing(v, [&](int h) {
+  // (inlined: GCC left the body out of line, a call and its register saves a face)
+  m.for_each_outgoing(v, [&](int h) CGAL_EXT_ALWAYS_INLINE {
     const Halfedge_frame fh = m.frame(h);
     relax(m.target(h), sigma + m.length(h), arrival_from(h, 0., 0., fh.length, 0.));
     const int across = Mesh_cache::next(h); // the edge opposite v in this face
