@@ -97,9 +97,9 @@ struct Window_list
 struct List_task
 {
   int halfedge = -1;
-  // the list's chains of windows, detached from it: its first and last chain nodes (the last
-  // one found by `propagate`), freed by the merge
-  std::uint32_t first_node = Window_pool::nil, last_node = Window_pool::nil;
+  // the list's chains of windows, detached from it: `chain_count` of the round's chains from
+  // `first_chain` (`VTP_solver::detach`), and how many windows they hold
+  std::uint32_t first_chain = 0, chain_count = 0, window_count = 0;
   double apex_distance = 0; // shortest path to the apex found through the list
   int apex_source = -1;     // the source of that path
   Arrival apex_arrival;     // and where it comes from
@@ -780,6 +780,7 @@ private:
     if(!m_batched) {
       List_task& task = m_task_one;
       for(std::size_t i = 0; i < m_scheduled_lists.size(); ++i) {
+        m_round_chains.clear();
         detach(m_scheduled_lists[i], task);
         next_step();
         propagate(task, m_main_slot);
@@ -793,6 +794,7 @@ private:
       const std::size_t n = m_scheduled_lists.size();
       if(m_tasks.size() < n)
         m_tasks.resize(n);
+      m_round_chains.clear();
       for(std::size_t i = 0; i < n; ++i) {
         detach(m_scheduled_lists[i], m_tasks[i]);
         if(m_recorder)
@@ -826,8 +828,8 @@ private:
       for(std::size_t first = begin; first < end; first += list_grain) {
         const std::size_t last = std::min(end, first + list_grain);
         for(std::size_t i = first; i < last; ++i)
-          for(std::uint32_t node = m_tasks[i].first_node; node != Window_pool::nil; node = m_chain_nodes[node].next)
-            prefetch_run(m_chain_nodes[node].chain.run);
+          for(const List_chain& c : chains_of(m_tasks[i]))
+            prefetch_run(c.run);
         for(std::size_t i = first; i < last; ++i)
           propagate(m_tasks[i], slot);
       }
@@ -879,11 +881,37 @@ private:
     return any;
   }
 
+  // The chains of a detached list.
+  struct Chain_range
+  {
+    const List_chain* first;
+    const List_chain* last;
+    const List_chain* begin() const { return first; }
+    const List_chain* end() const { return last; }
+  };
+  Chain_range chains_of(const List_task& task) const
+  {
+    const List_chain* first = m_round_chains.data() + task.first_chain;
+    return Chain_range{first, first + task.chain_count};
+  }
+
+  // Takes the list of h into `task`: its chains are copied to the round's, side by side, and
+  // their nodes freed at once. (The chain nodes are written by the serial steps: read by the
+  // thread that propagates the list, each would be a line that another core wrote.)
   void detach(int h, List_task& task)
   {
     m_list_flags[h] &= std::uint8_t(~in_scheduled_lists);
     task.halfedge = h;
-    task.first_node = m_head[h];
+    task.first_chain = std::uint32_t(m_round_chains.size());
+    std::uint32_t windows = 0, last = Window_pool::nil;
+    for(std::uint32_t node = m_head[h]; node != Window_pool::nil; node = m_chain_nodes[node].next) {
+      m_round_chains.push_back(m_chain_nodes[node].chain);
+      windows += m_chain_nodes[node].chain.run.count;
+      last = node;
+    }
+    task.chain_count = std::uint32_t(m_round_chains.size()) - task.first_chain;
+    task.window_count = windows;
+    free_chain_nodes(m_head[h], last);
     m_head[h] = Window_pool::nil;
     if(!m_read_stamp.empty()) {
       note_read(m_mesh.source(h));
@@ -946,14 +974,10 @@ private:
     const std::uint32_t stale_before = m_window_limit < infinity() || out_of_steps()
                                          ? std::numeric_limits<std::uint32_t>::max()
                                          : std::max(m_set_at[m_mesh.source(h)], m_set_at[m_mesh.target(h)]);
-    std::size_t count = 0;
-    for(std::uint32_t node = task.first_node; node != Window_pool::nil; node = m_chain_nodes[node].next)
-      count += m_chain_nodes[node].chain.run.count;
-    windows.resize(count);
+    windows.resize(task.window_count);
     Window** list = windows.data();
     std::size_t kept = 0;
-    for(std::uint32_t node = task.first_node; node != Window_pool::nil; node = m_chain_nodes[node].next) {
-      const List_chain& c = m_chain_nodes[node].chain;
+    for(const List_chain& c : chains_of(task)) {
       Window* const run = &m_pool[c.run.first];
       if(c.trimmed_at >= stale_before)
         for(std::uint32_t i = 0; i < c.run.count; ++i)
@@ -966,7 +990,8 @@ private:
     windows.resize(kept);
     if(!windows.empty())
       propagate_windows(task, slot, buffers, f, d_from, d_to);
-    task.last_node = free_runs(task.first_node, slot);
+    for(const List_chain& c : chains_of(task))
+      m_pool.free_run(slot, c.run.first, c.run.count);
     for(std::uint32_t i : buffers.extra)
       m_pool.free_run(slot, i, 1);
   }
@@ -1054,8 +1079,6 @@ private:
   {
     ++m_statistics.lists_propagated;
     const int h = task.halfedge;
-    free_chain_nodes(task.first_node, task.last_node); // the list's chains are freed
-    task.first_node = Window_pool::nil;
     if(m_recorder && !m_batched)
       record_task(task, m_main_slot);
     if(task.apex_distance < infinity())
@@ -1188,6 +1211,7 @@ private:
   };
   std::vector<std::uint32_t> m_head;
   std::vector<Chain_node> m_chain_nodes;
+  std::vector<List_chain> m_round_chains; // the chains of the lists detached for the round (or the one list)
   std::uint32_t m_free_chain_node = Window_pool::nil;
   // per half-edge: whether its list is in m_scheduled_lists, in m_waiting_lists
   static constexpr std::uint8_t in_scheduled_lists = 1, in_waiting_lists = 2;
