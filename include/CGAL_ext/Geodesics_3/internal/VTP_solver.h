@@ -92,14 +92,19 @@ struct Window_list
   }
 };
 
+/// A list detached from its half-edge to be propagated: `chain_count` of the round's chains
+/// from `first_chain` (`VTP_solver::detach`), holding `window_count` windows.
+struct Detached_list
+{
+  int halfedge;
+  std::uint32_t first_chain, chain_count, window_count;
+};
+
 /// One window list taken across its triangle: the work of one task of the propagation step.
 /// `propagate()` fills it reading only shared state that no task writes; `merge()` applies it.
 struct List_task
 {
   int halfedge = -1;
-  // the list's chains of windows, detached from it: `chain_count` of the round's chains from
-  // `first_chain` (`VTP_solver::detach`), and how many windows they hold
-  std::uint32_t first_chain = 0, chain_count = 0, window_count = 0;
   double apex_distance = 0; // shortest path to the apex found through the list
   int apex_source = -1;     // the source of that path
   Arrival apex_arrival;     // and where it comes from
@@ -780,10 +785,11 @@ private:
     if(!m_batched) {
       List_task& task = m_task_one;
       for(std::size_t i = 0; i < m_scheduled_lists.size(); ++i) {
+        m_detached.clear();
         m_round_chains.clear();
-        detach(m_scheduled_lists[i], task);
+        detach(m_scheduled_lists[i]);
         next_step();
-        propagate(task, m_main_slot);
+        propagate(m_detached[0], task, m_main_slot);
         merge(task);
         note_live_windows(m_pool);
       }
@@ -794,9 +800,10 @@ private:
       const std::size_t n = m_scheduled_lists.size();
       if(m_tasks.size() < n)
         m_tasks.resize(n);
+      m_detached.clear();
       m_round_chains.clear();
       for(std::size_t i = 0; i < n; ++i) {
-        detach(m_scheduled_lists[i], m_tasks[i]);
+        detach(m_scheduled_lists[i]);
         if(m_recorder)
           m_round_task[std::size_t(m_scheduled_lists[i])] = int(i);
       }
@@ -828,10 +835,10 @@ private:
       for(std::size_t first = begin; first < end; first += list_grain) {
         const std::size_t last = std::min(end, first + list_grain);
         for(std::size_t i = first; i < last; ++i)
-          for(const List_chain& c : chains_of(m_tasks[i]))
+          for(const List_chain& c : chains_of(m_detached[i]))
             prefetch_run(c.run);
         for(std::size_t i = first; i < last; ++i)
-          propagate(m_tasks[i], slot);
+          propagate(m_detached[i], m_tasks[i], slot);
       }
     });
   }
@@ -889,28 +896,27 @@ private:
     const List_chain* begin() const { return first; }
     const List_chain* end() const { return last; }
   };
-  Chain_range chains_of(const List_task& task) const
+  Chain_range chains_of(const Detached_list& list) const
   {
-    const List_chain* first = m_round_chains.data() + task.first_chain;
-    return Chain_range{first, first + task.chain_count};
+    const List_chain* first = m_round_chains.data() + list.first_chain;
+    return Chain_range{first, first + list.chain_count};
   }
 
-  // Takes the list of h into `task`: its chains are copied to the round's, side by side, and
-  // their nodes freed at once. (The chain nodes are written by the serial steps: read by the
-  // thread that propagates the list, each would be a line that another core wrote.)
-  void detach(int h, List_task& task)
+  // Takes the list of h out for the round (`m_detached`): its chains are copied to the
+  // round's, side by side, and their nodes freed at once. (The chain nodes and the tasks are
+  // written by the serial steps: read by the thread that propagates the list, each would be a
+  // line that another core wrote.)
+  void detach(int h)
   {
     m_list_flags[h] &= std::uint8_t(~in_scheduled_lists);
-    task.halfedge = h;
-    task.first_chain = std::uint32_t(m_round_chains.size());
+    const std::uint32_t first_chain = std::uint32_t(m_round_chains.size());
     std::uint32_t windows = 0, last = Window_pool::nil;
     for(std::uint32_t node = m_head[h]; node != Window_pool::nil; node = m_chain_nodes[node].next) {
       m_round_chains.push_back(m_chain_nodes[node].chain);
       windows += m_chain_nodes[node].chain.run.count;
       last = node;
     }
-    task.chain_count = std::uint32_t(m_round_chains.size()) - task.first_chain;
-    task.window_count = windows;
+    m_detached.push_back(Detached_list{h, first_chain, std::uint32_t(m_round_chains.size()) - first_chain, windows});
     free_chain_nodes(m_head[h], last);
     m_head[h] = Window_pool::nil;
     if(!m_read_stamp.empty()) {
@@ -946,13 +952,14 @@ private:
 #endif
   }
 
-  // Takes the windows of the task's list across the face of its half-edge. Reads the mesh and
-  // the vertex distances; writes only `task` and what belongs to `slot` (the calling thread's):
-  // the pool's slot, which takes back the list's windows and gives the children, and the
-  // slot's `List_buffers`.
-  void propagate(List_task& task, std::size_t slot)
+  // Takes the windows of a list (`detached`) across the face of its half-edge, into `task`. Reads
+  // the mesh and the vertex distances; writes only `task` and what belongs to `slot` (the
+  // calling thread's): the pool's slot, which takes back the list's windows and gives the
+  // children, and the slot's `List_buffers`.
+  void propagate(const Detached_list& detached, List_task& task, std::size_t slot)
   {
-    const int h = task.halfedge;
+    const int h = detached.halfedge;
+    task.halfedge = h;
     List_buffers& buffers = m_list_buffers[slot];
     Window_pointers& windows = buffers.windows;
     task.to_ac.clear();
@@ -974,10 +981,10 @@ private:
     const std::uint32_t stale_before = m_window_limit < infinity() || out_of_steps()
                                          ? std::numeric_limits<std::uint32_t>::max()
                                          : std::max(m_set_at[m_mesh.source(h)], m_set_at[m_mesh.target(h)]);
-    windows.resize(task.window_count);
+    windows.resize(detached.window_count);
     Window** list = windows.data();
     std::size_t kept = 0;
-    for(const List_chain& c : chains_of(task)) {
+    for(const List_chain& c : chains_of(detached)) {
       Window* const run = &m_pool[c.run.first];
       if(c.trimmed_at >= stale_before)
         for(std::uint32_t i = 0; i < c.run.count; ++i)
@@ -990,7 +997,7 @@ private:
     windows.resize(kept);
     if(!windows.empty())
       propagate_windows(task, slot, buffers, f, d_from, d_to);
-    for(const List_chain& c : chains_of(task))
+    for(const List_chain& c : chains_of(detached))
       m_pool.free_run(slot, c.run.first, c.run.count);
     for(std::uint32_t i : buffers.extra)
       m_pool.free_run(slot, i, 1);
@@ -1211,7 +1218,8 @@ private:
   };
   std::vector<std::uint32_t> m_head;
   std::vector<Chain_node> m_chain_nodes;
-  std::vector<List_chain> m_round_chains; // the chains of the lists detached for the round (or the one list)
+  std::vector<Detached_list> m_detached; // the lists detached for the round (or the one list)
+  std::vector<List_chain> m_round_chains; // and their chains
   std::uint32_t m_free_chain_node = Window_pool::nil;
   // per half-edge: whether its list is in m_scheduled_lists, in m_waiting_lists
   static constexpr std::uint8_t in_scheduled_lists = 1, in_waiting_lists = 2;
