@@ -785,11 +785,15 @@ private:
     if(!m_batched) {
       List_task& task = m_task_one;
       for(std::size_t i = 0; i < m_scheduled_lists.size(); ++i) {
-        m_detached.clear();
-        m_round_chains.clear();
-        detach(m_scheduled_lists[i]);
+        // (the list read along its nodes: copying them, as a round does, only costs here)
+        const int h = m_scheduled_lists[i];
+        const std::uint32_t first = take_list(h);
+        std::uint32_t windows = 0;
+        for(std::uint32_t node = first; node != Window_pool::nil; node = m_chain_nodes[node].next)
+          windows += m_chain_nodes[node].chain.run.count;
         next_step();
-        propagate(m_detached[0], task, m_main_slot);
+        propagate(h, windows, Node_chains{m_chain_nodes.data(), first}, task, m_main_slot);
+        free_chain_nodes(first, free_runs(first, m_main_slot));
         merge(task);
         note_live_windows(m_pool);
       }
@@ -838,7 +842,12 @@ private:
           for(const List_chain& c : chains_of(m_detached[i]))
             prefetch_run(c.run);
         for(std::size_t i = first; i < last; ++i)
-          propagate(m_detached[i], m_tasks[i], slot);
+        {
+          const Detached_list& d = m_detached[i];
+          propagate(d.halfedge, d.window_count, chains_of(d), m_tasks[i], slot);
+          for(const List_chain& c : chains_of(d))
+            m_pool.free_run(slot, c.run.first, c.run.count);
+        }
       }
     });
   }
@@ -888,7 +897,7 @@ private:
     return any;
   }
 
-  // The chains of a detached list.
+  // The chains of a list detached for a round.
   struct Chain_range
   {
     const List_chain* first;
@@ -908,22 +917,30 @@ private:
   // line that another core wrote.)
   void detach(int h)
   {
-    m_list_flags[h] &= std::uint8_t(~in_scheduled_lists);
+    const std::uint32_t first = take_list(h);
     const std::uint32_t first_chain = std::uint32_t(m_round_chains.size());
     std::uint32_t windows = 0, last = Window_pool::nil;
-    for(std::uint32_t node = m_head[h]; node != Window_pool::nil; node = m_chain_nodes[node].next) {
+    for(std::uint32_t node = first; node != Window_pool::nil; node = m_chain_nodes[node].next) {
       m_round_chains.push_back(m_chain_nodes[node].chain);
       windows += m_chain_nodes[node].chain.run.count;
       last = node;
     }
     m_detached.push_back(Detached_list{h, first_chain, std::uint32_t(m_round_chains.size()) - first_chain, windows});
-    free_chain_nodes(m_head[h], last);
+    free_chain_nodes(first, last);
+  }
+
+  // Takes the list off half-edge h (unscheduled, its head nil); returns its newest chain node.
+  std::uint32_t take_list(int h)
+  {
+    m_list_flags[h] &= std::uint8_t(~in_scheduled_lists);
+    const std::uint32_t first = m_head[h];
     m_head[h] = Window_pool::nil;
     if(!m_read_stamp.empty()) {
       note_read(m_mesh.source(h));
       note_read(m_mesh.target(h));
       note_read(m_mesh.apex(h));
     }
+    return first;
   }
 
   // A thread's buffers for the list it propagates (one a thread rather than one a task, so that
@@ -952,13 +969,13 @@ private:
 #endif
   }
 
-  // Takes the windows of a list (`detached`) across the face of its half-edge, into `task`. Reads
+  // Takes the `window_count` windows of the list of h (`chains`) across the face of h, into `task`. Reads
   // the mesh and the vertex distances; writes only `task` and what belongs to `slot` (the
   // calling thread's): the pool's slot, which takes back the list's windows and gives the
   // children, and the slot's `List_buffers`.
-  void propagate(const Detached_list& detached, List_task& task, std::size_t slot)
+  template <class Chains>
+  void propagate(int h, std::size_t window_count, const Chains& chains, List_task& task, std::size_t slot)
   {
-    const int h = detached.halfedge;
     task.halfedge = h;
     List_buffers& buffers = m_list_buffers[slot];
     Window_pointers& windows = buffers.windows;
@@ -981,10 +998,10 @@ private:
     const std::uint32_t stale_before = m_window_limit < infinity() || out_of_steps()
                                          ? std::numeric_limits<std::uint32_t>::max()
                                          : std::max(m_set_at[m_mesh.source(h)], m_set_at[m_mesh.target(h)]);
-    windows.resize(detached.window_count);
+    windows.resize(window_count);
     Window** list = windows.data();
     std::size_t kept = 0;
-    for(const List_chain& c : chains_of(detached)) {
+    for(const List_chain& c : chains) {
       Window* const run = &m_pool[c.run.first];
       if(c.trimmed_at >= stale_before)
         for(std::uint32_t i = 0; i < c.run.count; ++i)
@@ -997,8 +1014,6 @@ private:
     windows.resize(kept);
     if(!windows.empty())
       propagate_windows(task, slot, buffers, f, d_from, d_to);
-    for(const List_chain& c : chains_of(detached))
-      m_pool.free_run(slot, c.run.first, c.run.count);
     for(std::uint32_t i : buffers.extra)
       m_pool.free_run(slot, i, 1);
   }
@@ -1216,9 +1231,29 @@ private:
     List_chain chain;
     std::uint32_t next;
   };
+  // The chains of a list along its nodes from `first` (`Chain_range`: copied for a round).
+  struct Node_chains
+  {
+    const Chain_node* nodes;
+    std::uint32_t first;
+    struct iterator
+    {
+      const Chain_node* nodes;
+      std::uint32_t node;
+      const List_chain& operator*() const { return nodes[node].chain; }
+      iterator& operator++()
+      {
+        node = nodes[node].next;
+        return *this;
+      }
+      bool operator!=(const iterator& other) const { return node != other.node; }
+    };
+    iterator begin() const { return iterator{nodes, first}; }
+    iterator end() const { return iterator{nodes, Window_pool::nil}; }
+  };
   std::vector<std::uint32_t> m_head;
   std::vector<Chain_node> m_chain_nodes;
-  std::vector<Detached_list> m_detached; // the lists detached for the round (or the one list)
+  std::vector<Detached_list> m_detached; // batched: the lists detached for the round
   std::vector<List_chain> m_round_chains; // and their chains
   std::uint32_t m_free_chain_node = Window_pool::nil;
   // per half-edge: whether its list is in m_scheduled_lists, in m_waiting_lists
