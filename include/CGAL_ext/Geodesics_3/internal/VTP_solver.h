@@ -841,8 +841,7 @@ private:
         for(std::size_t i = first; i < last; ++i)
           for(const List_chain& c : chains_of(m_detached[i]))
             prefetch_run(c.run);
-        for(std::size_t i = first; i < last; ++i)
-        {
+        for(std::size_t i = first; i < last; ++i) {
           const Detached_list& d = m_detached[i];
           propagate(d.halfedge, d.window_count, chains_of(d), m_tasks[i], slot);
           for(const List_chain& c : chains_of(d))
@@ -925,7 +924,8 @@ private:
       windows += m_chain_nodes[node].chain.run.count;
       last = node;
     }
-    m_detached.push_back(Detached_list{h, first_chain, std::uint32_t(m_round_chains.size()) - first_chain, windows});
+    const std::uint32_t chain_count = std::uint32_t(m_round_chains.size()) - first_chain;
+    m_detached.push_back(Detached_list{h, first_chain, chain_count, windows});
     free_chain_nodes(first, last);
   }
 
@@ -969,10 +969,11 @@ private:
 #endif
   }
 
-  // Takes the `window_count` windows of the list of h (`chains`) across the face of h, into `task`. Reads
-  // the mesh and the vertex distances; writes only `task` and what belongs to `slot` (the
-  // calling thread's): the pool's slot, which takes back the list's windows and gives the
-  // children, and the slot's `List_buffers`.
+  // Takes the `window_count` windows of the list of h (`chains`: the round's copy, or along
+  // the nodes) across the face of h, into `task`. Reads the mesh and the vertex distances;
+  // writes only `task` and what belongs to `slot` (the calling thread's): the pool's slot,
+  // which gives the children, and the slot's `List_buffers`. The caller frees the list's runs
+  // once it returns (not before: the windows are read in place).
   template <class Chains>
   void propagate(int h, std::size_t window_count, const Chains& chains, List_task& task, std::size_t slot)
   {
@@ -991,8 +992,8 @@ private:
     const double d_from = m_distance[m_mesh.source(h)];
     const double d_to = m_distance[m_mesh.target(h)];
     // The list's windows are worked on where they are in the pool, through pointers, and freed
-    // at the end: the children are allocated before, so that none takes the place of a window
-    // still read. Trimming a window again against the distances it was trimmed with would leave
+    // by the caller after: the children are allocated before, so that none takes the place of
+    // a window still read. Trimming a window again against the distances it was trimmed with would leave
     // it as it is: only the chains trimmed before a step that set a distance of the edge's end
     // vertices are (every chain, under a finite limit, which trimming applies too).
     const std::uint32_t stale_before = m_window_limit < infinity() || out_of_steps()
