@@ -751,10 +751,12 @@ private:
 
   void clear_list(int h)
   {
-    const std::uint32_t first = m_head[h];
-    free_chain_nodes(first, free_runs(first, m_main_slot));
+    free_chains(m_head[h]);
     m_head[h] = Window_pool::nil;
   }
+
+  // Frees the chains from node `first` on (nil: none), their windows and their nodes (serial).
+  void free_chains(std::uint32_t first) { free_chain_nodes(first, free_runs(first, m_main_slot)); }
 
   // Frees the windows of the chains from node `first` on into the pool's `slot`; returns the
   // last node (nil if `first` is).
@@ -793,7 +795,7 @@ private:
           windows += m_chain_nodes[node].chain.run.count;
         next_step();
         propagate(h, windows, Node_chains{m_chain_nodes.data(), first}, task, m_main_slot);
-        free_chain_nodes(first, free_runs(first, m_main_slot));
+        free_chains(first);
         merge(task);
         note_live_windows(m_pool);
       }
@@ -993,9 +995,9 @@ private:
     const double d_to = m_distance[m_mesh.target(h)];
     // The list's windows are worked on where they are in the pool, through pointers, and freed
     // by the caller after: the children are allocated before, so that none takes the place of
-    // a window still read. Trimming a window again against the distances it was trimmed with would leave
-    // it as it is: only the chains trimmed before a step that set a distance of the edge's end
-    // vertices are (every chain, under a finite limit, which trimming applies too).
+    // a window still read. Trimming a window again against the distances it was trimmed with
+    // would leave it as it is: only the chains trimmed before a step that set a distance of the
+    // edge's end vertices are (every chain, under a finite limit, which trimming applies too).
     const std::uint32_t stale_before = m_window_limit < infinity() || out_of_steps()
                                          ? std::numeric_limits<std::uint32_t>::max()
                                          : std::max(m_set_at[m_mesh.source(h)], m_set_at[m_mesh.target(h)]);
