@@ -28,7 +28,7 @@ PHASES = [
 ]
 HELPERS = ('allocator_traits', 'Double_pair', 'clamp_to', 'square_roots', 'norm2d', 'square_root', '_mm_', 'distance_at(', ' std::max<', ' std::min<', 'std::abs', 'std::sqrt',
            'std::copysign', 'std::isfinite', 'std::__atomic_base', 'std::vector<', '__new_allocator', '__normal_iterator',
-           'Mesh_cache::', 'std::operator<', 'std::__and_', 'std::swap', 'std::move', 'std::pair<', 'enable_if',
+           'Solver_mesh::', 'std::operator<', 'std::__and_', 'std::swap', 'std::move', 'std::pair<', 'enable_if',
            '__gnu_cxx::operator', '__ops::')
 
 

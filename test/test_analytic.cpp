@@ -6,10 +6,10 @@
 #include "support/checks.h"
 #include "support/solve.h"
 
-#include <CGAL_ext/Geodesics_3/internal/Edge_window_store.h>
-#include <CGAL_ext/Geodesics_3/internal/Object_pool.h>
-#include <CGAL_ext/Geodesics_3/internal/Sources.h>
-#include <CGAL_ext/Geodesics_3/internal/Window.h>
+#include <CGAL_ext/Geodesics_3/internal/kernel/Edge_window_store.h>
+#include <CGAL_ext/Geodesics_3/internal/support/Object_pool.h>
+#include <CGAL_ext/Geodesics_3/internal/kernel/Source_windows.h>
+#include <CGAL_ext/Geodesics_3/internal/kernel/Window.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/task_arena.h>

@@ -424,8 +424,8 @@ TEST(DegenerateTriangles, ZeroLengthEdgeInARealMeshMatchesTheCollapsedMesh)
 // ---------------------------------------------------------------------------------------------
 // Isolated vertices: +infinity, and no source on their own.
 
-// The cache stores a frame for the first half-edge of each face only and derives the other two
-// (Mesh_cache::frame): on thin, obtuse and needle-like triangles in any orientation, away from
+// The solver mesh stores a frame for the first half-edge of each face only and derives the other two
+// (Solver_mesh::frame): on thin, obtuse and needle-like triangles in any orientation, away from
 // the origin, each frame is the triangle seen from its half-edge up to what rounding the
 // coordinates allows: their last bit (eps R) turns the half-edge's direction by eps R / length,
 // which moves a point at the longest side's distance by eps R longest / length. The reference
@@ -461,8 +461,8 @@ TEST(MeshCache, DerivedFramesAreTheTriangleSeenFromEachSide)
       const Vertex v0 = m.add_vertex(p[0]), v1 = m.add_vertex(p[1]), v2 = m.add_vertex(p[2]);
       m.add_face(v0, v1, v2);
     }
-  CGAL_ext::Geodesics_3::internal::Mesh_cache cache;
-  CGAL_ext::Geodesics_3::internal::build_mesh_cache(m, get(CGAL::vertex_point, m), get(CGAL::vertex_index, m),
+  CGAL_ext::Geodesics_3::internal::Solver_mesh cache;
+  CGAL_ext::Geodesics_3::internal::build_solver_mesh(m, get(CGAL::vertex_point, m), get(CGAL::vertex_index, m),
                                                     get(CGAL::face_index, m), cache);
   ASSERT_EQ(cache.number_of_faces, placed.size());
   typedef std::array<long double, 3> Exact_vector;
@@ -496,8 +496,8 @@ TEST(MeshCache, DerivedFramesAreTheTriangleSeenFromEachSide)
   }
 }
 
-// The cache stores the faces along a Z-order curve of their centroids and converts face
-// indices both ways. The elephant's faces, shuffled: the cache puts neighbouring faces together
+// The solver mesh stores the faces along a Z-order curve of their centroids and converts face
+// indices both ways. The elephant's faces, shuffled: the solver mesh puts neighbouring faces together
 // again, its two maps are inverse and keep each face's corners, and a face-point source on the
 // shuffled mesh gives the distances it gives on the mesh as read.
 TEST(MeshCache, FacesAreStoredAlongACurveAndConvertedBack)
@@ -512,8 +512,8 @@ TEST(MeshCache, FacesAreStoredAlongACurveAndConvertedBack)
   std::shuffle(triangles.begin(), triangles.end(), std::mt19937(3));
   const Mesh shuffled = mesh_from_soup(points, triangles);
 
-  CGAL_ext::Geodesics_3::internal::Mesh_cache cache;
-  CGAL_ext::Geodesics_3::internal::build_mesh_cache(shuffled, get(CGAL::vertex_point, shuffled),
+  CGAL_ext::Geodesics_3::internal::Solver_mesh cache;
+  CGAL_ext::Geodesics_3::internal::build_solver_mesh(shuffled, get(CGAL::vertex_point, shuffled),
                                                     get(CGAL::vertex_index, shuffled), get(CGAL::face_index, shuffled),
                                                     cache);
   ASSERT_EQ(cache.number_of_faces, num_faces(shuffled));
@@ -561,9 +561,9 @@ TEST(MeshCache, FacesAreStoredAlongACurveAndConvertedBack)
                      "a face-point source on the shuffled faces against the faces as read"));
 }
 
-// The cache numbers the caller's vertices in the order its faces name them: on a mesh whose
-// vertices are shuffled, vertices near in the cache are near on the surface, the two maps are
-// inverse, each cache vertex sits at its caller's vertex, and the distances (given back by the
+// The solver mesh numbers the caller's vertices in the order its faces name them: on a mesh whose
+// vertices are shuffled, vertices near in the solver mesh are near on the surface, the two maps are
+// inverse, each solver-mesh vertex sits at its caller's vertex, and the distances (given back by the
 // caller's vertices) are those of the mesh as read, from a vertex source and with stop vertices.
 TEST(MeshCache, VerticesAreNumberedAlongTheFacesAndConvertedBack)
 {
@@ -585,8 +585,8 @@ TEST(MeshCache, VerticesAreNumberedAlongTheFacesAndConvertedBack)
   const Mesh shuffled = mesh_from_soup(points, triangles);
   ASSERT_EQ(num_vertices(shuffled), n);
 
-  CGAL_ext::Geodesics_3::internal::Mesh_cache cache;
-  CGAL_ext::Geodesics_3::internal::build_mesh_cache(shuffled, get(CGAL::vertex_point, shuffled),
+  CGAL_ext::Geodesics_3::internal::Solver_mesh cache;
+  CGAL_ext::Geodesics_3::internal::build_solver_mesh(shuffled, get(CGAL::vertex_point, shuffled),
                                                     get(CGAL::vertex_index, shuffled), get(CGAL::face_index, shuffled),
                                                     cache);
   double step_in_cache = 0, step_as_given = 0;

@@ -11,7 +11,7 @@
 #include <CGAL_ext/geodesic_distance_matrix.h>
 #include <CGAL_ext/farthest_point_sampling.h>
 #include <CGAL_ext/geodesic_voronoi_diagram.h>
-#include <CGAL_ext/Geodesics_3/internal/Parallel_for.h>
+#include <CGAL_ext/Geodesics_3/internal/support/Parallel_for.h>
 
 #include <tbb/task_arena.h>
 

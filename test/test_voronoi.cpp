@@ -167,8 +167,8 @@ TEST(Geodesic_voronoi, the_way_a_point_is_reached_gives_its_distance)
 {
   namespace internal = CGAL_ext::Geodesics_3::internal;
   const Mesh& m = test_mesh("elephant");
-  internal::Mesh_cache cache;
-  internal::build_mesh_cache(m, get(CGAL::vertex_point, m), get(CGAL::vertex_index, m), get(CGAL::face_index, m), cache);
+  internal::Solver_mesh cache;
+  internal::build_solver_mesh(m, get(CGAL::vertex_point, m), get(CGAL::vertex_index, m), get(CGAL::face_index, m), cache);
   const internal::Solver_settings settings =
     internal::read_solver_settings(CGAL_ext::parameters::default_values(), CGAL_ext::FWP_MMP);
   internal::MMP_solver solver(cache, settings, false);

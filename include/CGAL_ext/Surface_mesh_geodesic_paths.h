@@ -10,9 +10,10 @@
 #include <CGAL_ext/Geodesics_3/Geodesic_error.h>
 #include <CGAL_ext/Geodesics_3/Geodesic_statistics.h>
 #include <CGAL_ext/Geodesics_3/Named_function_parameters.h>
-#include <CGAL_ext/Geodesics_3/internal/Geodesic_path_tracer.h>
-#include <CGAL_ext/Geodesics_3/internal/Geodesic_setup.h>
-#include <CGAL_ext/Geodesics_3/internal/Recorded_windows.h>
+#include <CGAL_ext/Geodesics_3/internal/paths/Geodesic_path_tracer.h>
+#include <CGAL_ext/Geodesics_3/internal/mesh/Mesh_setup.h>
+#include <CGAL_ext/Geodesics_3/internal/support/Solver_arena.h>
+#include <CGAL_ext/Geodesics_3/internal/paths/Exact_window_build.h>
 
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/tags.h>
@@ -417,9 +418,9 @@ private:
       return p;
     }
     const std::array<double, 3> x = m_tracer->position(l);
-    const Geodesics_3::internal::Mesh_cache& cache = m_mesh.cache();
+    const Geodesics_3::internal::Solver_mesh& cache = m_mesh.cache();
     if(cache.is_face_changed(l.kind == Location::EDGE ? l.halfedge / 3 : l.face)) {
-      // a face the cache split (at a degenerate neighbour): a point of the caller's face
+      // a face the solver mesh split (at a degenerate neighbour): a point of the caller's face
       int f;
       std::array<double, 3> b;
       cache.mesh_face_point(l.kind == Location::EDGE ? l.halfedge / 3 : l.face, x, f, b);
@@ -439,7 +440,7 @@ private:
     return p;
   }
 
-  // Solver and tracer on the heap, like the mesh cache, so that their references survive a
+  // Solver and tracer on the heap, like the solver mesh, so that their references survive a
   // move of this object.
   Mesh_setup m_mesh;
   std::vector<Geodesics_3::internal::Source_point> m_sources;

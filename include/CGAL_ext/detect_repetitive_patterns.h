@@ -8,7 +8,7 @@
 #include <CGAL_ext/Geodesics_3/Geodesic_error.h>
 #include <CGAL_ext/Geodesics_3/Geodesic_statistics.h>
 #include <CGAL_ext/Geodesics_3/Named_function_parameters.h>
-#include <CGAL_ext/Geodesics_3/internal/Pattern_detection.h>
+#include <CGAL_ext/Geodesics_3/internal/patterns/Pattern_detector.h>
 
 #include <CGAL/boost/graph/properties.h>
 #include <CGAL/tags.h>

@@ -9,8 +9,9 @@
 #include <CGAL_ext/Geodesics_3/Geodesic_error.h>
 #include <CGAL_ext/Geodesics_3/Geodesic_statistics.h>
 #include <CGAL_ext/Geodesics_3/Named_function_parameters.h>
-#include <CGAL_ext/Geodesics_3/internal/Farthest_point_sampling.h>
-#include <CGAL_ext/Geodesics_3/internal/Geodesic_setup.h>
+#include <CGAL_ext/Geodesics_3/internal/sampling/Farthest_point_sampler.h>
+#include <CGAL_ext/Geodesics_3/internal/mesh/Mesh_setup.h>
+#include <CGAL_ext/Geodesics_3/internal/support/Solver_arena.h>
 
 #include <CGAL/iterator.h>
 #include <CGAL/tags.h>
@@ -160,7 +161,7 @@ OutputIterator farthest_point_sampling(const TriangleMesh& tm, std::size_t numbe
   }
 
   const internal::Mesh_setup<TriangleMesh, Vertex_point_map> mesh(tm, np);
-  const internal::Mesh_cache& cache = mesh.cache();
+  const internal::Solver_mesh& cache = mesh.cache();
   if(number_of_samples < 1)
     throw Geodesic_error("the number of samples must be at least 1, got 0");
   if(number_of_samples > cache.number_of_mesh_vertices)

@@ -9,7 +9,7 @@
 #include <CGAL_ext/Geodesics_3/Geodesic_algorithm.h>
 #include <CGAL_ext/Geodesics_3/Geodesic_error.h>
 #include <CGAL_ext/Geodesics_3/Named_function_parameters.h>
-#include <CGAL_ext/Geodesics_3/internal/Distance_rows.h>
+#include <CGAL_ext/Geodesics_3/internal/distance_rows/Distance_rows.h>
 
 #include <CGAL/tags.h>
 
@@ -24,7 +24,7 @@ namespace CGAL_ext {
 /// computes, for each of `sources` in turn, the exact geodesic distance from it alone to every
 /// vertex of `tm` (a row of the distance matrix), and hands the row to `row`. With
 /// `CGAL::Parallel_tag` the sources are solved in parallel on TBB threads, one sequential VTP
-/// solve each on one mesh cache built once; the rows are the same for every number of threads,
+/// solve each on one solver mesh built once; the rows are the same for every number of threads,
 /// and `row` is always called from the calling thread, in the order of `sources`. At most a few
 /// rows per thread are held at once, so a matrix larger than memory can be streamed to a file.
 ///

@@ -10,10 +10,11 @@
 #include <CGAL_ext/Geodesics_3/Geodesic_error.h>
 #include <CGAL_ext/Geodesics_3/Geodesic_statistics.h>
 #include <CGAL_ext/Geodesics_3/Named_function_parameters.h>
-#include <CGAL_ext/Geodesics_3/internal/Geodesic_path_tracer.h>
-#include <CGAL_ext/Geodesics_3/internal/Geodesic_setup.h>
-#include <CGAL_ext/Geodesics_3/internal/Geodesic_voronoi.h>
-#include <CGAL_ext/Geodesics_3/internal/Recorded_windows.h>
+#include <CGAL_ext/Geodesics_3/internal/paths/Geodesic_path_tracer.h>
+#include <CGAL_ext/Geodesics_3/internal/mesh/Mesh_setup.h>
+#include <CGAL_ext/Geodesics_3/internal/support/Solver_arena.h>
+#include <CGAL_ext/Geodesics_3/internal/voronoi/Voronoi_builder.h>
+#include <CGAL_ext/Geodesics_3/internal/paths/Exact_window_build.h>
 
 #include <CGAL/tags.h>
 
@@ -123,7 +124,7 @@ geodesic_voronoi_diagram(const TriangleMesh& tm, const Sources& sources,
     throw Geodesic_error("a Voronoi diagram takes no max_distance: every cell is whole");
   const internal::Solver_settings settings = internal::read_window_build_settings(np, "a Voronoi diagram");
   const internal::Mesh_setup<TriangleMesh, Vertex_point_map> mesh(tm, np);
-  const internal::Mesh_cache& cache = mesh.cache();
+  const internal::Solver_mesh& cache = mesh.cache();
   // the windows the diagram is read from: those MMP keeps on the edges, or VTP's as it propagated them
   internal::Exact_window_build build(cache, settings, parallel);
   internal::Solver_base& solver = build.solver();
@@ -148,7 +149,7 @@ geodesic_voronoi_diagram(const TriangleMesh& tm, const Sources& sources,
     const std::array<double, 3> x = builder.position(p);
     int f = p.face;
     std::array<double, 3> b = p.b;
-    if(cache.is_face_changed(p.face)) // a face the cache split or removed: the caller's face
+    if(cache.is_face_changed(p.face)) // a face the solver mesh split or removed: the caller's face
       cache.mesh_face_point(p.face, x, f, b);
     out.location = typename Diagram::Face_location(mesh.face_of(f), b);
     out.point = Point_3(mesh.to_mesh_unit(x[0]), mesh.to_mesh_unit(x[1]), mesh.to_mesh_unit(x[2]));

@@ -9,7 +9,7 @@
 #include <CGAL_ext/Geodesics_3/Geodesic_error.h>
 #include <CGAL_ext/Geodesics_3/Geodesic_mesh_repairs.h>
 #include <CGAL_ext/Geodesics_3/Named_function_parameters.h>
-#include <CGAL_ext/Geodesics_3/internal/Soup_repair.h>
+#include <CGAL_ext/Geodesics_3/internal/mesh/Soup_repair.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/Polygon_mesh_processing/polygon_mesh_to_polygon_soup.h>

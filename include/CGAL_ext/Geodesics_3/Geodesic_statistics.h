@@ -24,7 +24,7 @@ struct Geodesic_statistics
   std::size_t stored_window_bytes = 0; ///< the same: memory of the kept windows and the edge lists
   std::size_t batched_runs_kept = 0;  ///< farthest-point sampling on two threads or more: samples whose run went at once with an earlier sample's and was kept
   std::size_t batched_runs_undone = 0; ///< the same, undone (the next sample was another vertex, or the runs met)
-  double seconds_setup = 0;          ///< building the mesh cache and checking the input
+  double seconds_setup = 0;          ///< building the solver mesh and checking the input
   double seconds_solve = 0;          ///< the propagation alone
   // The phases of the batched solvers (parallel, or approximate): 0 for sequential exact VTP.
   double seconds_selection = 0;      ///< batched: taking vertices, resetting the wavefront; PMMP: taking windows

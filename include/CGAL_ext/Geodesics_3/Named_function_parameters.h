@@ -11,7 +11,7 @@ namespace internal_np {
 
 #ifndef DOXYGEN_RUNNING
 #define CGAL_ext_add_named_parameter(X, Y, Z) enum X { Y };
-#include <CGAL_ext/Geodesics_3/internal/parameters_interface.h>
+#include <CGAL_ext/Geodesics_3/internal/support/parameters_interface.h>
 #undef CGAL_ext_add_named_parameter
 #endif
 enum statistics_t { statistics };
@@ -45,7 +45,7 @@ struct Named_function_parameters : CGAL::Named_function_parameters<T, Tag, Base>
 #include <CGAL/STL_Extension/internal/parameters_interface.h>
 #undef CGAL_add_named_parameter
 #define CGAL_ext_add_named_parameter(X, Y, Z) CGAL_ext_chain_parameter(CGAL_ext::internal_np, X, Z)
-#include <CGAL_ext/Geodesics_3/internal/parameters_interface.h>
+#include <CGAL_ext/Geodesics_3/internal/support/parameters_interface.h>
 #undef CGAL_ext_add_named_parameter
 #undef CGAL_ext_chain_parameter
 #endif
@@ -85,7 +85,7 @@ inline Named_function_parameters<bool, CGAL::internal_np::all_default_t> default
 #include <CGAL/STL_Extension/internal/parameters_interface.h>
 #undef CGAL_add_named_parameter
 #define CGAL_ext_add_named_parameter(X, Y, Z) CGAL_ext_start_parameter(CGAL_ext::internal_np, X, Z)
-#include <CGAL_ext/Geodesics_3/internal/parameters_interface.h>
+#include <CGAL_ext/Geodesics_3/internal/support/parameters_interface.h>
 #undef CGAL_ext_add_named_parameter
 #undef CGAL_ext_start_parameter
 #endif
