@@ -282,17 +282,17 @@ void run_mmp(const Mesh& tm, vertex_descriptor source, CGAL_ext::Geodesic_algori
   const double setup = seconds_since(t);
   gp.add_source(source);
   const auto tb = Clock::now();
+  CGAL_ext::Geodesic_statistics stats;
   if(parallel)
-    gp.build(params::number_of_threads(threads).batch_size(batch_size));
+    gp.build(params::number_of_threads(threads).batch_size(batch_size).statistics(stats));
   else
-    gp.build(params::algorithm(algorithm));
+    gp.build(params::algorithm(algorithm).statistics(stats));
   const double build = seconds_since(tb);
   const double total = seconds_since(t);
   const double rss_build = peak_rss_mb();
   const auto td = Clock::now();
   gp.vertex_distances(CGAL::make_property_map(d));
   const double seconds_distances = seconds_since(td);
-  const CGAL_ext::Geodesic_statistics& stats = gp.statistics();
   const double nv = double(num_vertices(tm));
   const double mb = 1024.0 * 1024.0;
   if(parallel) {

@@ -48,10 +48,12 @@ int main(int argc, char** argv)
     // One source at vertex 0; build() computes the windows every query reads.
     Geodesic_paths paths(mesh);
     paths.add_source(vertex_descriptor(0));
-    paths.build(); // VTP's windows; CGAL_ext::parameters::algorithm(CGAL_ext::MMP) for classic MMP
+    // VTP's windows; add .algorithm(CGAL_ext::MMP) for classic MMP
+    CGAL_ext::Geodesic_statistics statistics;
+    paths.build(CGAL_ext::parameters::statistics(statistics));
     std::cout << "distance to vertex " << target << ": " << paths.distance(target) << "\n"
               << "distance to a point of face " << face_point.first << ": " << paths.distance(face_point) << "\n"
-              << "(" << paths.statistics().windows_stored << " windows kept on the edges)\n";
+              << "(" << statistics.windows_stored << " windows kept on the edges)\n";
 
     // The shortest path to the point of the face, as points from the source to the target.
     std::vector<Kernel::Point_3> polyline;

@@ -36,11 +36,16 @@ int main(int argc, char** argv)
     }
     sites.emplace_back(Mesh::Face_index(std::uint32_t(mesh.number_of_faces() / 3)), std::array<double, 3>{{0.2, 0.3, 0.5}});
 
-    const auto diagram = CGAL_ext::geodesic_voronoi_diagram(mesh, sites);
+    // each vertex's cell (the index of its nearest site) comes back through a property map
+    auto cell = mesh.add_property_map<Mesh::Vertex_index, std::size_t>("v:cell").first;
+    CGAL_ext::Geodesic_statistics statistics;
+    const auto diagram = CGAL_ext::geodesic_voronoi_diagram(
+      mesh, sites, CGAL_ext::parameters::vertex_source_map(cell).statistics(statistics));
     std::vector<std::size_t> cell_size(sites.size(), 0);
-    for(std::size_t c : diagram.vertex_cell)
-      if(c != CGAL_ext::no_source)
-        ++cell_size[c];
+    for(Mesh::Vertex_index v : vertices(mesh))
+      if(cell[v] != CGAL_ext::no_source)
+        ++cell_size[cell[v]];
+    std::cout << statistics.windows_created << " windows propagated\n";
     for(std::size_t i = 0; i < sites.size(); ++i)
       std::cout << "cell " << i << ": " << cell_size[i] << " vertices\n";
     for(const auto& b : diagram.bisectors)

@@ -59,8 +59,9 @@ int main(int argc, char** argv)
   }
   try {
     // The marked instance: the vertices within geodesic distance `radius` of `centre`.
+    CGAL_ext::Pattern_statistics st;
     const auto patterns = CGAL_ext::detect_repetitive_patterns<CGAL::Parallel_if_available_tag>(
-      mesh, CGAL_ext::Pattern_patch<Mesh>::disk(centre, radius));
+      mesh, CGAL_ext::Pattern_patch<Mesh>::disk(centre, radius), CGAL_ext::parameters::statistics(st));
     std::cout << patterns.instances.size() << " instances (the marked one first):\n";
     for(const auto& instance : patterns.instances)
       std::cout << "  centre vertex " << instance.center_vertex << " at (" << instance.center << "), scale "
@@ -70,10 +71,9 @@ int main(int argc, char** argv)
     for(const auto& [a, b] : patterns.arrangement_edges)
       std::cout << " " << a << "-" << b;
     std::cout << "\n";
-    const auto& st = patterns.statistics;
-    std::cout << "seconds: sampling " << st.sampling_seconds << ", signatures " << st.signature_seconds
-              << ", matching " << st.matching_seconds << ", clustering " << st.clustering_seconds
-              << ", optimization " << st.optimization_seconds << ", arrangement " << st.arrangement_seconds << "\n";
+    std::cout << "seconds: sampling " << st.seconds_sampling << ", signatures " << st.seconds_signatures
+              << ", matching " << st.seconds_matching << ", clustering " << st.seconds_clustering
+              << ", optimization " << st.seconds_optimization << ", arrangement " << st.seconds_arrangement << "\n";
     return patterns.instances.size() >= 2 ? EXIT_SUCCESS : EXIT_FAILURE;
   } catch(const CGAL_ext::Geodesic_error& e) {
     std::cerr << "error: " << e.what() << "\n";

@@ -15,6 +15,7 @@
 
 #include <CGAL/Point_set_3.h>
 #include <CGAL/Point_set_3/IO/PLY.h>
+#include <CGAL/property_map.h>
 
 #include <CLI/CLI.hpp>
 
@@ -213,7 +214,11 @@ Patterns_found detect(const Mesh_file& file, const CGAL_ext::Pattern_patch<Mesh>
     progress.show_percent("patterns", done);
     return true;
   };
+  std::vector<long> label_of_vertex(file.mesh.number_of_vertices(), -1);
+  CGAL_ext::Pattern_statistics statistics;
   const auto np = CGAL_ext::parameters::scale_range(scales)
+                    .vertex_instance_map(CGAL::make_property_map(label_of_vertex))
+                    .statistics(statistics)
                     .callback(show_progress)
                     .sample_spacing(o.sample_spacing)
                     .match_tolerance(o.match_tolerance)
@@ -226,18 +231,14 @@ Patterns_found detect(const Mesh_file& file, const CGAL_ext::Pattern_patch<Mesh>
       : CGAL_ext::detect_repetitive_patterns<CGAL::Parallel_if_available_tag>(file.mesh, patch, np.stroke(stroke));
   const std::vector<std::size_t> point = point_of_vertex(file);
   Patterns_found out;
-  std::vector<long> label_of_vertex(file.mesh.number_of_vertices(), -1);
-  for(std::size_t i = 0; i < found.instances.size(); ++i) {
-    const auto& instance = found.instances[i];
+  for(const auto& instance : found.instances) {
     Found_instance f;
     f.center = instance.center;
     f.center_vertex = point[instance.center_vertex.idx()];
     f.scale = instance.scale;
     f.energy = instance.energy;
-    for(Vertex_index v : instance.vertices) {
+    for(Vertex_index v : instance.vertices)
       f.vertices.push_back(point[v.idx()]);
-      label_of_vertex[v.idx()] = long(i);
-    }
     std::sort(f.vertices.begin(), f.vertices.end());
     f.vertices.erase(std::unique(f.vertices.begin(), f.vertices.end()), f.vertices.end());
     for(const auto& [p, q] : instance.correspondence)
@@ -248,7 +249,7 @@ Patterns_found detect(const Mesh_file& file, const CGAL_ext::Pattern_patch<Mesh>
     out.labels.push_back(label_of_vertex[v.idx()]);
   out.edges = found.arrangement_edges;
   out.triangles = found.arrangement_triangles;
-  out.stats = found.statistics;
+  out.stats = statistics;
   return out;
 }
 
@@ -356,12 +357,12 @@ int run_patterns(const Patterns_options& options)
       << "distance_rows=" << st.distance_rows << "\n"
       << "instances=" << found.instances.size() << "\n"
       << "arrangement_edges=" << found.edges.size() << "\n"
-      << "seconds_sampling=" << st.sampling_seconds << "\n"
-      << "seconds_signatures=" << st.signature_seconds << "\n"
-      << "seconds_matching=" << st.matching_seconds << "\n"
-      << "seconds_clustering=" << st.clustering_seconds << "\n"
-      << "seconds_optimization=" << st.optimization_seconds << "\n"
-      << "seconds_arrangement=" << st.arrangement_seconds << "\n"
+      << "seconds_sampling=" << st.seconds_sampling << "\n"
+      << "seconds_signatures=" << st.seconds_signatures << "\n"
+      << "seconds_matching=" << st.seconds_matching << "\n"
+      << "seconds_clustering=" << st.seconds_clustering << "\n"
+      << "seconds_optimization=" << st.seconds_optimization << "\n"
+      << "seconds_arrangement=" << st.seconds_arrangement << "\n"
       << "seconds_detection=" << seconds_detect << "\n"
       << "peak_rss_mb=" << peak_rss_mb() << "\n";
     std::cerr << s.str() << std::flush;

@@ -376,14 +376,17 @@ Voronoi_result compute_voronoi(const Mesh_file& file, const std::vector<Surface_
 {
   check_a_source_is_on_a_face(file, sources);
   Voronoi_result result;
+  std::vector<long> cell(file.mesh.number_of_vertices(), -1);
+  std::vector<double> distance(file.mesh.number_of_vertices());
   const auto np = CGAL_ext::parameters::glued_vertices(file.glued_vertices)
                     .batch_size(choice.batch_size)
-                    .algorithm(choice.algorithm->library);
+                    .algorithm(choice.algorithm->library)
+                    .vertex_source_map(CGAL::make_property_map(cell))
+                    .vertex_distance_map(CGAL::make_property_map(distance));
   const auto take = [&](const auto& diagram) {
     for(Vertex_index v : file.vertex_of_point) {
-      const std::size_t cell = diagram.vertex_cell[v.idx()];
-      result.cells.push_back(cell == CGAL_ext::no_source ? -1 : long(cell));
-      result.distances.push_back(diagram.vertex_distance[v.idx()]);
+      result.cells.push_back(cell[v.idx()]);
+      result.distances.push_back(distance[v.idx()]);
     }
     for(const auto& b : diagram.bisectors) {
       Voronoi_result::Curve curve{b.first_source, b.second_source, {}};

@@ -10,12 +10,13 @@
 #include <CGAL_ext/Geodesics_3/Geodesic_error.h>
 #include <CGAL_ext/Geodesics_3/Geodesic_statistics.h>
 #include <CGAL_ext/Geodesics_3/Named_function_parameters.h>
-#include <CGAL_ext/Geodesics_3/internal/paths/Geodesic_path_tracer.h>
 #include <CGAL_ext/Geodesics_3/internal/mesh/Mesh_setup.h>
-#include <CGAL_ext/Geodesics_3/internal/support/Solver_arena.h>
 #include <CGAL_ext/Geodesics_3/internal/paths/Exact_window_build.h>
+#include <CGAL_ext/Geodesics_3/internal/paths/Geodesic_path_tracer.h>
+#include <CGAL_ext/Geodesics_3/internal/support/Solver_arena.h>
 
 #include <CGAL/Kernel_traits.h>
+#include <CGAL/Polygon_mesh_processing/locate.h>
 #include <CGAL/tags.h>
 
 #include <array>
@@ -37,9 +38,8 @@ namespace CGAL_ext {
 /// other on each edge; with `CGAL_ext::MMP` the windows of MMP in exact order of distance
 /// (Mitchell, Mount and Papadimitriou), with `CGAL_ext::FWP_MMP` bucket by bucket, PMMP with
 /// `CGAL::Parallel_tag` (thesis chapter 3). All give the same distances up to round-off; PVTP
-/// and PMMP give the same for every number of threads. VTP's build is the fastest: from one
-/// source on a 416k-vertex mesh VTP's took 0.55-0.75x FWP-MMP's time on one thread, and PVTP's
-/// 0.5-0.6x PMMP's on two (doc/experiments.md).
+/// and PMMP give the same for every number of threads. VTP's build is the quickest (it keeps
+/// fewer windows; the manual's benchmark compares them).
 ///
 /// After `build()` every query is `const` and may run on any number of threads at once.
 /// A point is a vertex or a face location: a face and barycentric coordinates in the order of the
@@ -81,9 +81,11 @@ public:
   /// its number type
   typedef typename Kernel::FT FT;
   /// barycentric coordinates in the order of the face's vertices, from `source(halfedge(f))`
-  typedef std::array<FT, 3> Barycentric_coordinates;
-  /// a point of a face
-  typedef std::pair<face_descriptor, Barycentric_coordinates> Face_location;
+  /// (CGAL's `Polygon_mesh_processing::Barycentric_coordinates`)
+  typedef CGAL::Polygon_mesh_processing::Barycentric_coordinates<FT> Barycentric_coordinates;
+  /// a point of a face, as CGAL's `Polygon_mesh_processing::locate()` gives it and
+  /// `construct_point()` takes it
+  typedef CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, FT> Face_location;
 
   /// What `nearest_source()` returns for a point that no source reaches.
   static constexpr std::size_t no_source = CGAL_ext::no_source;
@@ -227,8 +229,7 @@ public:
   ///     \cgalParamDefault{`+infinity`}
   ///   \cgalParamNEnd
   ///   \cgalParamNBegin{statistics}
-  ///     \cgalParamDescription{receives windows created and kept, memory and seconds per phase (also
-  ///                           given by `statistics()`)}
+  ///     \cgalParamDescription{receives windows created and kept, memory and seconds per phase}
   ///     \cgalParamType{`CGAL_ext::Geodesic_statistics&`}
   ///   \cgalParamNEnd
   /// \cgalNamedParamsEnd
@@ -354,6 +355,8 @@ public:
     return visitor;
   }
   /// \return what the last `build()` did: windows created and kept, their memory, seconds per phase
+  /// \deprecated pass `statistics(s)` to `build()` instead, as to every long-running function of
+  /// the package; this accessor goes in the next release
   const Geodesic_statistics& statistics() const { return m_statistics; }
   /// @}
 

@@ -5,6 +5,7 @@
 /// \file detect_repetitive_patterns.h
 /// Repetitive pattern detection from one marked instance (thesis chapter 5).
 
+#include <CGAL_ext/Geodesics_3/Geodesic_algorithm.h>
 #include <CGAL_ext/Geodesics_3/Geodesic_error.h>
 #include <CGAL_ext/Geodesics_3/Geodesic_statistics.h>
 #include <CGAL_ext/Geodesics_3/Named_function_parameters.h>
@@ -15,6 +16,7 @@
 
 #include <array>
 #include <cstddef>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -85,6 +87,8 @@ struct Repetitive_patterns
   std::vector<std::pair<std::size_t, std::size_t>> arrangement_edges;
   /// triples of instances whose cells meet at a Voronoi vertex
   std::vector<std::array<std::size_t, 3>> arrangement_triangles;
+  /// \deprecated pass `statistics(s)` to `detect_repetitive_patterns()` instead, as to every
+  /// long-running function of the package; this copy goes in the next release
   Pattern_statistics statistics;
 };
 
@@ -185,6 +189,18 @@ struct Repetitive_patterns
 ///                           `Geodesic_error`}
 ///     \cgalParamType{an instance of `std::function<bool(double)>`} \cgalParamDefault{none}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_instance_map}
+///     \cgalParamDescription{receives the instance of every vertex: its index in the result's `instances`
+///                           (the marked patch is 0), `CGAL_ext::no_source` (-1 in a signed map) for a vertex in
+///                           none; a vertex of two overlapping instances gets the later one}
+///     \cgalParamType{a writable property map, key `vertex_descriptor`, value an integer type}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{statistics}
+///     \cgalParamDescription{receives the seconds of each step and what it counted}
+///     \cgalParamType{`CGAL_ext::Pattern_statistics&`}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{vertex_point_map, vertex_index_map}
 ///     \cgalParamDescription{as in `geodesic_distances()`}
 ///   \cgalParamNEnd
@@ -275,6 +291,21 @@ detect_repetitive_patterns(const TriangleMesh& tm, const Pattern_patch<TriangleM
   result.arrangement_edges = found.arrangement_edges;
   result.arrangement_triangles = found.arrangement_triangles;
   result.statistics = found.statistics;
+  if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::statistics_t>::value) {
+    typedef std::decay_t<decltype(get_parameter(np, internal_np::statistics))> Given;
+    static_assert(std::is_same<Given, Pattern_statistics*>::value,
+                  "CGAL_ext: detect_repetitive_patterns() reports a CGAL_ext::Pattern_statistics through `statistics`");
+    *get_parameter(np, internal_np::statistics) = found.statistics;
+  }
+  if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::vertex_instance_map_t>::value) {
+    auto instance_map = get_parameter(np, internal_np::vertex_instance_map);
+    typedef typename boost::property_traits<decltype(instance_map)>::value_type Label;
+    for(auto v : vertices(tm))
+      put(instance_map, v, Label(no_source));
+    for(std::size_t i = 0; i < found.instances.size(); ++i)
+      for(std::size_t v : found.instances[i].vertices)
+        put(instance_map, vertex_of_index[v], Label(i));
+  }
   return result;
 }
 

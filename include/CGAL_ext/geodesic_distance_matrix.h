@@ -39,8 +39,10 @@ namespace CGAL_ext {
 ///        `j` (the `vertex_index_map`), `+infinity` where unreached or beyond `max_distance`;
 ///        the vector is reused after the call returns
 /// \param np optional named parameters: `max_distance` (the rows of a local, sparse matrix),
-///        `approximation`, `number_of_threads`, `glued_vertices`, and CGAL's `vertex_point_map`,
-///        `vertex_index_map` and `face_index_map`, as for `geodesic_distances()`
+///        `approximation`, `number_of_threads`, `glued_vertices`, `statistics` (a
+///        `Geodesic_statistics&`: the rows' windows and seconds of solve summed, the largest peak of
+///        one row), and CGAL's `vertex_point_map`, `vertex_index_map` and `face_index_map`, as for
+///        `geodesic_distances()`
 ///
 /// \throws Geodesic_error for what `geodesic_distances()` throws, when there is no source, or
 ///         when `algorithm` is not `CGAL_ext::VTP`

@@ -16,10 +16,13 @@
 #include <CGAL_ext/Geodesics_3/internal/voronoi/Voronoi_builder.h>
 #include <CGAL_ext/Geodesics_3/internal/paths/Exact_window_build.h>
 
+#include <CGAL/Kernel_traits.h>
+#include <CGAL/Polygon_mesh_processing/locate.h>
 #include <CGAL/tags.h>
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cstddef>
 #include <set>
 #include <utility>
@@ -34,8 +37,11 @@ template <class TriangleMesh, class Point_3>
 struct Geodesic_voronoi_diagram
 {
   typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
-  /// a point of a face: barycentric coordinates in the order of its vertices from `source(halfedge(f))`
-  typedef std::pair<face_descriptor, std::array<double, 3>> Face_location;
+  /// the number type of `Point_3`'s kernel
+  typedef typename CGAL::Kernel_traits<Point_3>::Kernel::FT FT;
+  /// a point of a face, as CGAL's `Polygon_mesh_processing` gives and takes it: barycentric
+  /// coordinates in the order of its vertices from `source(halfedge(f))`
+  typedef CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, FT> Face_location;
 
   /// a point of the diagram: where it lies on the surface, and where in space
   struct Point
@@ -57,8 +63,13 @@ struct Geodesic_voronoi_diagram
     std::vector<std::size_t> sources; ///< increasing, three or more
   };
 
-  std::vector<std::size_t> vertex_cell;   ///< by vertex index: the nearest source, or `no_source`
-  std::vector<double> vertex_distance;     ///< by vertex index: the distance to it (`+infinity` if none)
+  /// by vertex index: the nearest source, or `no_source`. \deprecated pass
+  /// `vertex_source_map(map)` to `geodesic_voronoi_diagram()` instead (as to `geodesic_distances()`);
+  /// filled only when neither that nor `vertex_distance_map` is given, and gone in the next release
+  std::vector<std::size_t> vertex_cell;
+  /// by vertex index: the distance to the nearest source (`+infinity` if none). \deprecated pass
+  /// `vertex_distance_map(map)` instead; filled as `vertex_cell` is
+  std::vector<double> vertex_distance;
   std::vector<Bisector> bisectors;
   std::vector<Vertex> vertices;
   /// the dual graph (geodesic Delaunay): the pairs of sources whose cells share a bisector,
@@ -82,8 +93,8 @@ struct Geodesic_voronoi_diagram
 /// `CGAL::Parallel_tag`), kept as they are propagated across each face and clipped against each
 /// other on each edge (VTP drops a path only where another is at least as short, so these
 /// windows and the paths through the vertices give every distance), or with `algorithm(FWP_MMP)`
-/// or `algorithm(MMP)` those MMP keeps (PMMP with `CGAL::Parallel_tag`); the same cells. On the
-/// README's golf ball with 60 sources VTP's is 1.5-1.9x faster than MMP's. In each face the nearest source is followed along the
+/// or `algorithm(MMP)` those MMP keeps (PMMP with `CGAL::Parallel_tag`); the same cells (VTP's
+/// build is the quicker: it keeps fewer windows). In each face the nearest source is followed along the
 /// boundary (each edge is cut where its windows change, and every change of the nearest source
 /// is located by bisection to 1e-12 of the segment searched, at most an edge); a face crossed
 /// by two cells holds one bisector, whose inner points are found the same way; a face where
@@ -100,8 +111,10 @@ struct Geodesic_voronoi_diagram
 /// \param tm the triangle mesh
 /// \param sources the sites of the diagram; a duplicated source has an empty cell
 /// \param np optional named parameters: `algorithm` (`VTP`, the default, `FWP_MMP` or `MMP`), `number_of_threads`,
-///        `batch_size`, `glued_vertices`, and
-///        CGAL's `vertex_point_map`, `vertex_index_map`, `face_index_map`, as for `geodesic_distances()`
+///        `batch_size`, `glued_vertices`, `statistics` (a `Geodesic_statistics&`: the build's, and
+///        `seconds_diagram`), `vertex_source_map` (receives each vertex's cell: the index of its nearest
+///        source, `no_source` where none), `vertex_distance_map` (receives each vertex's distance to it),
+///        and CGAL's `vertex_point_map`, `vertex_index_map`, `face_index_map`, as for `geodesic_distances()`
 /// \return the diagram
 ///
 /// \throws Geodesic_error for what `geodesic_distances()` throws, when there is no source, and for
@@ -119,6 +132,7 @@ geodesic_voronoi_diagram(const TriangleMesh& tm, const Sources& sources,
   typedef internal::Vertex_point_map_of<TriangleMesh, NamedParameters> Vertex_point_map;
   typedef typename boost::property_traits<Vertex_point_map>::value_type Point_3;
   typedef Geodesic_voronoi_diagram<TriangleMesh, Point_3> Diagram;
+  typedef typename Diagram::FT FT;
 
   if constexpr(!is_default_parameter<NamedParameters, internal_np::max_distance_t>::value)
     throw Geodesic_error("a Voronoi diagram takes no max_distance: every cell is whole");
@@ -134,15 +148,24 @@ geodesic_voronoi_diagram(const TriangleMesh& tm, const Sources& sources,
   build.run<parallel>(settings.number_of_threads);
   const internal::Geodesic_path_tracer tracer(windows, solver.distances(), solver.nearest_sources(), solver.sources(),
                                               solver.max_distance());
+  const auto diagram_start = std::chrono::steady_clock::now();
   internal::Voronoi_builder builder(cache, windows, tracer);
   internal::run_in_arena<parallel>(settings.number_of_threads, [&] { builder.run(solver.sources(), parallel); });
 
   Diagram diagram;
-  const std::vector<int>& nearest = solver.nearest_sources();
-  for(std::size_t i = 0; i < cache.number_of_mesh_vertices; ++i) {
-    const std::size_t v = std::size_t(cache.cache_vertex(int(i)));
-    diagram.vertex_cell.push_back(nearest[v] < 0 ? no_source : std::size_t(nearest[v]));
-    diagram.vertex_distance.push_back(mesh.to_mesh_unit(solver.distances()[v]));
+  constexpr bool source_map = !is_default_parameter<NamedParameters, internal_np::vertex_source_map_t>::value;
+  constexpr bool distance_map = !is_default_parameter<NamedParameters, internal_np::vertex_distance_map_t>::value;
+  if constexpr(source_map)
+    mesh.write_vertex_sources(parameters::get_parameter(np, internal_np::vertex_source_map), solver.nearest_sources());
+  if constexpr(distance_map)
+    mesh.write_vertex_distances(parameters::get_parameter(np, internal_np::vertex_distance_map), solver.distances());
+  if constexpr(!source_map && !distance_map) { // the deprecated vectors, for callers that pass no map
+    const std::vector<int>& nearest = solver.nearest_sources();
+    for(std::size_t i = 0; i < cache.number_of_mesh_vertices; ++i) {
+      const std::size_t v = std::size_t(cache.cache_vertex(int(i)));
+      diagram.vertex_cell.push_back(nearest[v] < 0 ? no_source : std::size_t(nearest[v]));
+      diagram.vertex_distance.push_back(mesh.to_mesh_unit(solver.distances()[v]));
+    }
   }
   auto point_of = [&](const internal::Face_point& p) {
     typename Diagram::Point out;
@@ -151,7 +174,7 @@ geodesic_voronoi_diagram(const TriangleMesh& tm, const Sources& sources,
     std::array<double, 3> b = p.b;
     if(cache.is_face_changed(p.face)) // a face the solver mesh split or removed: the caller's face
       cache.mesh_face_point(p.face, x, f, b);
-    out.location = typename Diagram::Face_location(mesh.face_of(f), b);
+    out.location = typename Diagram::Face_location(mesh.face_of(f), {{FT(b[0]), FT(b[1]), FT(b[2])}});
     out.point = Point_3(mesh.to_mesh_unit(x[0]), mesh.to_mesh_unit(x[1]), mesh.to_mesh_unit(x[2]));
     return out;
   };
@@ -246,6 +269,9 @@ geodesic_voronoi_diagram(const TriangleMesh& tm, const Sources& sources,
   diagram.dual_edges.assign(pairs.begin(), pairs.end());
   diagram.dual_triangles.assign(triples.begin(), triples.end());
   diagram.unresolved_parts = builder.unresolved();
+  Geodesic_statistics statistics = build.statistics();
+  statistics.seconds_diagram = std::chrono::duration<double>(std::chrono::steady_clock::now() - diagram_start).count();
+  internal::report_statistics(settings, statistics, mesh.seconds());
   return diagram;
 }
 

@@ -7,7 +7,10 @@
 namespace CGAL_ext {
 
 /// \ingroup PkgGeodesics3Ref
-/// What a geodesic solver did, filled in when the caller passes `statistics(stats)`.
+/// What a geodesic solver did, filled in when the caller passes `statistics(stats)` to
+/// `geodesic_distances()`, `Surface_mesh_geodesic_paths::build()`, `geodesic_voronoi_diagram()`,
+/// `farthest_point_sampling()` or the distance-matrix functions. Seconds are named
+/// `seconds_<phase>`, counts by what they count.
 struct Geodesic_statistics
 {
   std::size_t vertices = 0;          ///< vertices of the mesh
@@ -35,18 +38,19 @@ struct Geodesic_statistics
   double seconds_organization = 0;   ///< PMMP: filing the new windows by edge
   double seconds_clipping = 0;       ///< MMP family: clipping new windows against the stored ones
   double seconds_pushing = 0;        ///< PMMP: queue and vertex updates after clipping
+  double seconds_diagram = 0;        ///< `geodesic_voronoi_diagram()`: cutting the faces and joining the bisectors, after the solve
 };
 
 /// \ingroup PkgGeodesics3Ref
 /// The time of each step of `detect_repetitive_patterns()` and what it counted.
 struct Pattern_statistics
 {
-  double sampling_seconds = 0;     ///< farthest-point sampling
-  double signature_seconds = 0;    ///< curvatures, signatures and the distances between samples
-  double matching_seconds = 0;     ///< candidate matches
-  double clustering_seconds = 0;   ///< spectral embedding and mean shift
-  double optimization_seconds = 0; ///< refinement of correspondences and placement of centres
-  double arrangement_seconds = 0;  ///< the Voronoi diagram of the centres
+  double seconds_sampling = 0;     ///< farthest-point sampling
+  double seconds_signatures = 0;   ///< curvatures, signatures and the distances between samples
+  double seconds_matching = 0;     ///< candidate matches
+  double seconds_clustering = 0;   ///< spectral embedding and mean shift
+  double seconds_optimization = 0; ///< refinement of correspondences and placement of centres
+  double seconds_arrangement = 0;  ///< the Voronoi diagram of the centres
   std::size_t samples = 0;         ///< farthest-point samples of the mesh
   std::size_t patch_samples = 0;   ///< of them in the patch
   std::size_t matches = 0;         ///< candidate matches, summed over the searches

@@ -50,13 +50,16 @@ struct Named_function_parameters : CGAL::Named_function_parameters<T, Tag, Base>
 #undef CGAL_ext_chain_parameter
 #endif
 
-  /// asks the solver to fill `s`, which is kept by reference.
+  /// asks the function to fill `s` (kept by reference) with what it did: every long-running
+  /// function of the package reports this way, a `Geodesic_statistics` for the solvers and the
+  /// applications built on one propagation, a `Pattern_statistics` for pattern detection.
+  /// \tparam Statistics `Geodesic_statistics` or `Pattern_statistics`
   /// \param s the statistics to fill
   /// \return the pack with `statistics` added
-  Named_function_parameters<Geodesic_statistics*, internal_np::statistics_t, self>
-  statistics(Geodesic_statistics& s) const
+  template <class Statistics>
+  Named_function_parameters<Statistics*, internal_np::statistics_t, self> statistics(Statistics& s) const
   {
-    return Named_function_parameters<Geodesic_statistics*, internal_np::statistics_t, self>(&s, *this);
+    return Named_function_parameters<Statistics*, internal_np::statistics_t, self>(&s, *this);
   }
 };
 
@@ -90,13 +93,16 @@ inline Named_function_parameters<bool, CGAL::internal_np::all_default_t> default
 #undef CGAL_ext_start_parameter
 #endif
 
-/// asks the solver to fill `s`, which is kept by reference.
+/// asks the function to fill `s` (kept by reference) with what it did: a `Geodesic_statistics`
+/// for the solvers and the applications built on one propagation, a `Pattern_statistics` for
+/// pattern detection.
+/// \tparam Statistics `Geodesic_statistics` or `Pattern_statistics`
 /// \param s the statistics to fill
 /// \return a pack holding `statistics`
-inline Named_function_parameters<Geodesic_statistics*, internal_np::statistics_t>
-statistics(Geodesic_statistics& s)
+template <class Statistics>
+Named_function_parameters<Statistics*, internal_np::statistics_t> statistics(Statistics& s)
 {
-  return Named_function_parameters<Geodesic_statistics*, internal_np::statistics_t>(&s);
+  return Named_function_parameters<Statistics*, internal_np::statistics_t>(&s);
 }
 
 using CGAL::parameters::choose_parameter;

@@ -105,8 +105,10 @@ public:
       throw Geodesic_error("no source was given");
     m_arena.execute([&] {
       const std::size_t threads = parallel ? arena_concurrency() : 1;
-      if(m_solvers.size() < threads)
+      if(m_solvers.size() < threads) {
         m_solvers.resize(threads);
+        m_run_statistics.resize(threads);
+      }
       std::size_t batch = parallel ? 4 * threads : 1;
       std::size_t rows_made = 0, bytes_made = 0;
       std::vector<Row> rows;
@@ -125,6 +127,7 @@ public:
             Row_stops stops(*solver, m_mesh.cache());
             add_stops(first + j, stops);
             solver->run();
+            add_run_statistics(m_run_statistics[slot], solver->statistics());
             make_row(*solver, m_mesh, rows[j]);
           } catch(...) {
             solver = nullptr; // a run cut short leaves windows that `reset()` does not clear
@@ -143,6 +146,16 @@ public:
     });
   }
 
+  /// What the runs of every call so far did, summed over the threads (seconds of solve are the
+  /// threads' together), with the set-up's seconds; given to the caller who asked with `statistics`.
+  Geodesic_statistics report_statistics() const
+  {
+    Geodesic_statistics total;
+    for(const Geodesic_statistics& s : m_run_statistics)
+      add_run_statistics(total, s);
+    return internal::report_statistics(m_settings, total, m_mesh.seconds());
+  }
+
 private:
   template <class NamedParameters>
   static Solver_settings vtp_settings(const NamedParameters& np)
@@ -158,6 +171,7 @@ private:
   Setup m_mesh;
   Solver_arena<parallel> m_arena;
   std::vector<std::unique_ptr<VTP_solver>> m_solvers; // by thread slot
+  std::vector<Geodesic_statistics> m_run_statistics;   // by thread slot: its runs, summed
 };
 
 /// Calls `make_row(solver, mesh, row)` after a sequential VTP run from each source (see
@@ -169,8 +183,8 @@ void for_each_row(const TriangleMesh& tm, const Sources& sources, const NamedPar
 {
   Row_solvers<parallel, TriangleMesh, Vertex_point_map_of<TriangleMesh, NamedParameters>> solvers(tm, np);
   solvers.template for_each_row<Row>(solvers.mesh().source_points(sources), solvers.max_distance_asked(),
-                                     std::vector<int>(), make_row,
-                                     hand_over);
+                                     std::vector<int>(), make_row, hand_over);
+  solvers.report_statistics();
 }
 
 /// A sparse row: the vertices the last run of `solver` reached (within its limit), by vertex

@@ -7,11 +7,13 @@
 #include <CGAL_ext/Geodesics_3/Geodesic_statistics.h>
 #include <CGAL_ext/Geodesics_3/Named_function_parameters.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <limits>
 #include <sstream>
 #include <string>
+#include <type_traits>
 
 namespace CGAL_ext {
 namespace Geodesics_3 {
@@ -85,8 +87,31 @@ Solver_settings read_solver_settings(const NamedParameters& np, Geodesic_algorit
     throw Geodesic_error("batch size must be positive, got " + std::to_string(batch));
   s.batch_size = static_cast<std::size_t>(batch);
 
-  s.statistics = choose_parameter(get_parameter(np, internal_np::statistics), s.statistics);
+  if constexpr(!is_default_parameter<NamedParameters, internal_np::statistics_t>::value) {
+    typedef std::decay_t<decltype(get_parameter(np, internal_np::statistics))> Given;
+    static_assert(std::is_same<Given, Geodesic_statistics*>::value,
+                  "CGAL_ext: this function reports a CGAL_ext::Geodesic_statistics through `statistics`");
+    s.statistics = get_parameter(np, internal_np::statistics);
+  }
   return s;
+}
+
+/// Adds what one run did to `total`, for a call made of many runs (the rows of a matrix): counts
+/// and seconds add up, peaks are the largest of one run.
+inline void add_run_statistics(Geodesic_statistics& total, const Geodesic_statistics& run)
+{
+  total.vertices = run.vertices;
+  total.faces = run.faces;
+  total.windows_created += run.windows_created;
+  total.peak_windows = std::max(total.peak_windows, run.peak_windows);
+  total.peak_window_bytes = std::max(total.peak_window_bytes, run.peak_window_bytes);
+  total.vertices_popped += run.vertices_popped;
+  total.lists_propagated += run.lists_propagated;
+  total.wavefront_resets += run.wavefront_resets;
+  total.seconds_solve += run.seconds_solve;
+  total.seconds_selection += run.seconds_selection;
+  total.seconds_propagation += run.seconds_propagation;
+  total.seconds_merge += run.seconds_merge;
 }
 
 /// What a solver did, with the seconds of the set-up; also given to the caller when it asked

@@ -1090,7 +1090,7 @@ private:
     }
   }
 
-  // Out of line: inlined, its copy made GCC leave the list's sort out of line (+1 % instructions).
+  // Out of line: inlined, its copy made GCC leave the list's sort out of line (more instructions).
   CGAL_EXT_NOINLINE static void keep_for_record(List_task& task, const Window_pointers& windows)
   {
     task.propagated.clear();

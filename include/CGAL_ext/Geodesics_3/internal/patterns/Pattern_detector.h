@@ -126,22 +126,22 @@ public:
     set_patch(patch);
     report(Step::sampling, 0);
     sample();
-    m_times->sampling_seconds = seconds_since(start);
+    m_times->seconds_sampling = seconds_since(start);
     start = Clock::now();
     compute_signatures();
-    m_times->signature_seconds = seconds_since(start);
+    m_times->seconds_signatures = seconds_since(start);
     grow_regions();
     report(Step::centres, 0);
     start = Clock::now();
     place_centres();
     merge_overlapping_instances();
     m_row_solvers.reset(); // the last row: their cache and solvers go before the arrangement's
-    m_times->optimization_seconds += seconds_since(start);
+    m_times->seconds_optimization += seconds_since(start);
     report(Step::arrangement, 0);
     start = Clock::now();
     result.instances = collect_instances();
     arrange(result);
-    m_times->arrangement_seconds = seconds_since(start);
+    m_times->seconds_arrangement = seconds_since(start);
     report(Step::arrangement, 1);
     return result;
   }
@@ -881,7 +881,7 @@ private:
       matches.insert(matches.end(), mine.begin(), mine.begin() + std::ptrdiff_t(keep));
     }
     m_times->matches += matches.size();
-    m_times->matching_seconds += seconds_since(start);
+    m_times->seconds_matching += seconds_since(start);
 
     start = Clock::now();
     const std::vector<std::vector<std::size_t>> clusters = cluster_matches(
@@ -892,7 +892,7 @@ private:
       [&](std::size_t a, std::size_t b) { return sample_distance(a, b); }, m_settings.consistency_cutoff, m_spacing,
       k);
     m_times->clusters += clusters.size();
-    m_times->clustering_seconds += seconds_since(start);
+    m_times->seconds_clustering += seconds_since(start);
 
     start = Clock::now();
     std::vector<Instance> found;
@@ -901,7 +901,7 @@ private:
       if(make_instance(matches, cluster, in_neighbourhood, found, instance))
         found.push_back(instance);
     }
-    m_times->optimization_seconds += seconds_since(start);
+    m_times->seconds_optimization += seconds_since(start);
     return found;
   }
 
