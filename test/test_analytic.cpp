@@ -7,9 +7,9 @@
 #include "support/solve.h"
 
 #include <CGAL_ext/Geodesics_3/internal/kernel/Edge_window_store.h>
-#include <CGAL_ext/Geodesics_3/internal/support/Object_pool.h>
 #include <CGAL_ext/Geodesics_3/internal/kernel/Source_windows.h>
 #include <CGAL_ext/Geodesics_3/internal/kernel/Window.h>
+#include <CGAL_ext/Geodesics_3/internal/support/Object_pool.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/task_arena.h>

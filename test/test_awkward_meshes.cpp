@@ -7,8 +7,8 @@
 #include "support/checks.h"
 #include "support/solve.h"
 
-#include <CGAL_ext/Surface_mesh_geodesic_paths.h>
 #include <CGAL_ext/Geodesics_3/polyline_length.h>
+#include <CGAL_ext/Surface_mesh_geodesic_paths.h>
 
 #include <algorithm>
 #include <array>

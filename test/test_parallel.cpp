@@ -7,11 +7,11 @@
 #include "support/path_checks.h"
 #include "support/solve.h"
 
-#include <CGAL_ext/Surface_mesh_geodesic_paths.h>
-#include <CGAL_ext/geodesic_distance_matrix.h>
-#include <CGAL_ext/farthest_point_sampling.h>
-#include <CGAL_ext/geodesic_voronoi_diagram.h>
 #include <CGAL_ext/Geodesics_3/internal/support/Parallel_for.h>
+#include <CGAL_ext/Surface_mesh_geodesic_paths.h>
+#include <CGAL_ext/farthest_point_sampling.h>
+#include <CGAL_ext/geodesic_distance_matrix.h>
+#include <CGAL_ext/geodesic_voronoi_diagram.h>
 
 #include <tbb/task_arena.h>
 

@@ -9,8 +9,8 @@
 #include <CGAL_ext/Geodesics_3/Geodesic_error.h>
 #include <CGAL_ext/Geodesics_3/Geodesic_statistics.h>
 #include <CGAL_ext/Geodesics_3/Named_function_parameters.h>
-#include <CGAL_ext/Geodesics_3/internal/sampling/Farthest_point_sampler.h>
 #include <CGAL_ext/Geodesics_3/internal/mesh/Mesh_setup.h>
+#include <CGAL_ext/Geodesics_3/internal/sampling/Farthest_point_sampler.h>
 #include <CGAL_ext/Geodesics_3/internal/support/Solver_arena.h>
 
 #include <CGAL/iterator.h>

@@ -9,9 +9,9 @@
 #include <CGAL_ext/Geodesics_3/Geodesic_error.h>
 #include <CGAL_ext/Geodesics_3/Geodesic_statistics.h>
 #include <CGAL_ext/Geodesics_3/Named_function_parameters.h>
+#include <CGAL_ext/Geodesics_3/internal/kernel/VTP_solver.h>
 #include <CGAL_ext/Geodesics_3/internal/mesh/Mesh_setup.h>
 #include <CGAL_ext/Geodesics_3/internal/support/Solver_arena.h>
-#include <CGAL_ext/Geodesics_3/internal/kernel/VTP_solver.h>
 #include <CGAL_ext/Surface_mesh_geodesic_paths.h>
 
 #include <CGAL/tags.h>

@@ -10,11 +10,11 @@
 #include <CGAL_ext/Geodesics_3/Geodesic_error.h>
 #include <CGAL_ext/Geodesics_3/Geodesic_statistics.h>
 #include <CGAL_ext/Geodesics_3/Named_function_parameters.h>
-#include <CGAL_ext/Geodesics_3/internal/paths/Geodesic_path_tracer.h>
 #include <CGAL_ext/Geodesics_3/internal/mesh/Mesh_setup.h>
+#include <CGAL_ext/Geodesics_3/internal/paths/Exact_window_build.h>
+#include <CGAL_ext/Geodesics_3/internal/paths/Geodesic_path_tracer.h>
 #include <CGAL_ext/Geodesics_3/internal/support/Solver_arena.h>
 #include <CGAL_ext/Geodesics_3/internal/voronoi/Voronoi_builder.h>
-#include <CGAL_ext/Geodesics_3/internal/paths/Exact_window_build.h>
 
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/Polygon_mesh_processing/locate.h>

@@ -7,10 +7,10 @@
 
 #include <CGAL_ext/Geodesics_3/Geodesic_algorithm.h>
 #include <CGAL_ext/Geodesics_3/Geodesic_error.h>
-#include <CGAL_ext/Geodesics_3/internal/mesh/Mesh_setup.h>
-#include <CGAL_ext/Geodesics_3/internal/support/Solver_arena.h>
-#include <CGAL_ext/Geodesics_3/internal/support/Parallel_for.h>
 #include <CGAL_ext/Geodesics_3/internal/kernel/VTP_solver.h>
+#include <CGAL_ext/Geodesics_3/internal/mesh/Mesh_setup.h>
+#include <CGAL_ext/Geodesics_3/internal/support/Parallel_for.h>
+#include <CGAL_ext/Geodesics_3/internal/support/Solver_arena.h>
 
 #include <algorithm>
 #include <cstddef>
@@ -153,6 +153,8 @@ public:
     Geodesic_statistics total;
     for(const Geodesic_statistics& s : m_run_statistics)
       add_run_statistics(total, s);
+    total.vertices = m_mesh.cache().number_of_mesh_vertices;
+    total.faces = m_mesh.cache().number_of_faces;
     return internal::report_statistics(m_settings, total, m_mesh.seconds());
   }
 

@@ -2,9 +2,9 @@
 #ifndef CGAL_EXT_GEODESICS_3_INTERNAL_KERNEL_EDGE_WINDOW_STORE_H
 #define CGAL_EXT_GEODESICS_3_INTERNAL_KERNEL_EDGE_WINDOW_STORE_H
 
+#include <CGAL_ext/Geodesics_3/internal/kernel/Window.h>
 #include <CGAL_ext/Geodesics_3/internal/mesh/Solver_mesh.h>
 #include <CGAL_ext/Geodesics_3/internal/support/Object_pool.h>
-#include <CGAL_ext/Geodesics_3/internal/kernel/Window.h>
 
 #include <algorithm>
 #include <cstdint>

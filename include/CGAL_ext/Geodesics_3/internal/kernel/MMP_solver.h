@@ -4,12 +4,12 @@
 
 #include <CGAL_ext/Geodesics_3/Geodesic_algorithm.h>
 #include <CGAL_ext/Geodesics_3/internal/kernel/Edge_window_store.h>
-#include <CGAL_ext/Geodesics_3/internal/mesh/Solver_mesh.h>
-#include <CGAL_ext/Geodesics_3/internal/support/Parallel_for.h>
 #include <CGAL_ext/Geodesics_3/internal/kernel/Priority_queues.h>
 #include <CGAL_ext/Geodesics_3/internal/kernel/Solver_base.h>
 #include <CGAL_ext/Geodesics_3/internal/kernel/Source_windows.h>
 #include <CGAL_ext/Geodesics_3/internal/kernel/Window.h>
+#include <CGAL_ext/Geodesics_3/internal/mesh/Solver_mesh.h>
+#include <CGAL_ext/Geodesics_3/internal/support/Parallel_for.h>
 
 #include <algorithm>
 #include <cstdint>

@@ -6,9 +6,9 @@
 #include <CGAL_ext/Geodesics_3/Geodesic_statistics.h>
 #include <CGAL_ext/Geodesics_3/Tolerances.h>
 #include <CGAL_ext/Geodesics_3/internal/kernel/Solver_settings.h>
-#include <CGAL_ext/Geodesics_3/internal/mesh/Solver_mesh.h>
 #include <CGAL_ext/Geodesics_3/internal/kernel/Source_windows.h>
 #include <CGAL_ext/Geodesics_3/internal/kernel/Window.h>
+#include <CGAL_ext/Geodesics_3/internal/mesh/Solver_mesh.h>
 
 #include <algorithm>
 #include <chrono>

@@ -96,12 +96,11 @@ Solver_settings read_solver_settings(const NamedParameters& np, Geodesic_algorit
   return s;
 }
 
-/// Adds what one run did to `total`, for a call made of many runs (the rows of a matrix): counts
-/// and seconds add up, peaks are the largest of one run.
+/// Adds what one run did to `total`, for a call made of many runs (the rows of a matrix, the
+/// samples' runs): counts and seconds add up, peaks are the largest of one run; the mesh's sizes
+/// are the caller's to set.
 inline void add_run_statistics(Geodesic_statistics& total, const Geodesic_statistics& run)
 {
-  total.vertices = run.vertices;
-  total.faces = run.faces;
   total.windows_created += run.windows_created;
   total.peak_windows = std::max(total.peak_windows, run.peak_windows);
   total.peak_window_bytes = std::max(total.peak_window_bytes, run.peak_window_bytes);

@@ -8,8 +8,8 @@
 #include <CGAL_ext/Geodesics_3/Tolerances.h>
 #include <CGAL_ext/Geodesics_3/internal/kernel/Source_points.h>
 #include <CGAL_ext/Geodesics_3/internal/kernel/Window.h>
-#include <CGAL_ext/Geodesics_3/internal/support/Inlining.h>
 #include <CGAL_ext/Geodesics_3/internal/mesh/Solver_mesh.h>
+#include <CGAL_ext/Geodesics_3/internal/support/Inlining.h>
 
 #include <algorithm>
 #include <array>

@@ -3,14 +3,14 @@
 #define CGAL_EXT_GEODESICS_3_INTERNAL_KERNEL_VTP_SOLVER_H
 
 #include <CGAL_ext/Geodesics_3/Geodesic_error.h>
-#include <CGAL_ext/Geodesics_3/internal/support/Inlining.h>
-#include <CGAL_ext/Geodesics_3/internal/mesh/Solver_mesh.h>
-#include <CGAL_ext/Geodesics_3/internal/support/Object_pool.h>
-#include <CGAL_ext/Geodesics_3/internal/support/Parallel_for.h>
 #include <CGAL_ext/Geodesics_3/internal/kernel/Priority_queues.h>
 #include <CGAL_ext/Geodesics_3/internal/kernel/Solver_base.h>
 #include <CGAL_ext/Geodesics_3/internal/kernel/Source_windows.h>
 #include <CGAL_ext/Geodesics_3/internal/kernel/Window.h>
+#include <CGAL_ext/Geodesics_3/internal/mesh/Solver_mesh.h>
+#include <CGAL_ext/Geodesics_3/internal/support/Inlining.h>
+#include <CGAL_ext/Geodesics_3/internal/support/Object_pool.h>
+#include <CGAL_ext/Geodesics_3/internal/support/Parallel_for.h>
 
 #include <algorithm>
 #include <chrono>

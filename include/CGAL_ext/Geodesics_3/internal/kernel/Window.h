@@ -4,8 +4,8 @@
 
 #include <CGAL_ext/Geodesics_3/Tolerances.h>
 #include <CGAL_ext/Geodesics_3/internal/kernel/Double_pair.h>
-#include <CGAL_ext/Geodesics_3/internal/support/Inlining.h>
 #include <CGAL_ext/Geodesics_3/internal/mesh/Solver_mesh.h>
+#include <CGAL_ext/Geodesics_3/internal/support/Inlining.h>
 
 #include <algorithm>
 #include <cmath>

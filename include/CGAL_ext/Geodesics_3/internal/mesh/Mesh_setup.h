@@ -10,9 +10,9 @@
 #include <CGAL_ext/Geodesics_3/Geodesic_error.h>
 #include <CGAL_ext/Geodesics_3/Geodesic_statistics.h>
 #include <CGAL_ext/Geodesics_3/Named_function_parameters.h>
-#include <CGAL_ext/Geodesics_3/internal/mesh/Build_solver_mesh.h>
 #include <CGAL_ext/Geodesics_3/internal/kernel/Solver_settings.h>
 #include <CGAL_ext/Geodesics_3/internal/kernel/Source_points.h>
+#include <CGAL_ext/Geodesics_3/internal/mesh/Build_solver_mesh.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/boost/graph/properties.h>

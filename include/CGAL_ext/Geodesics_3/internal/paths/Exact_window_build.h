@@ -9,12 +9,12 @@
 #include <CGAL_ext/Geodesics_3/Geodesic_error.h>
 #include <CGAL_ext/Geodesics_3/Tolerances.h>
 #include <CGAL_ext/Geodesics_3/internal/kernel/Edge_window_store.h>
-#include <CGAL_ext/Geodesics_3/internal/mesh/Mesh_setup.h>
-#include <CGAL_ext/Geodesics_3/internal/support/Solver_arena.h>
 #include <CGAL_ext/Geodesics_3/internal/kernel/MMP_solver.h>
-#include <CGAL_ext/Geodesics_3/internal/mesh/Solver_mesh.h>
 #include <CGAL_ext/Geodesics_3/internal/kernel/Solver_settings.h>
 #include <CGAL_ext/Geodesics_3/internal/kernel/VTP_solver.h>
+#include <CGAL_ext/Geodesics_3/internal/mesh/Mesh_setup.h>
+#include <CGAL_ext/Geodesics_3/internal/mesh/Solver_mesh.h>
+#include <CGAL_ext/Geodesics_3/internal/support/Solver_arena.h>
 
 #include <memory>
 #include <string>

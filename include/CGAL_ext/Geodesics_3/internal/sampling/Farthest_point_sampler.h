@@ -7,13 +7,13 @@
 // is nearer (VTP_solver::keep_field_for_next_run).
 
 #include <CGAL_ext/Geodesics_3/Geodesic_error.h>
-#include <CGAL_ext/Geodesics_3/internal/mesh/Mesh_setup.h>
-#include <CGAL_ext/Geodesics_3/internal/support/Solver_arena.h>
-#include <CGAL_ext/Geodesics_3/internal/mesh/Solver_mesh.h>
-#include <CGAL_ext/Geodesics_3/internal/support/Parallel_for.h>
 #include <CGAL_ext/Geodesics_3/internal/kernel/Solver_settings.h>
 #include <CGAL_ext/Geodesics_3/internal/kernel/Source_windows.h>
 #include <CGAL_ext/Geodesics_3/internal/kernel/VTP_solver.h>
+#include <CGAL_ext/Geodesics_3/internal/mesh/Mesh_setup.h>
+#include <CGAL_ext/Geodesics_3/internal/mesh/Solver_mesh.h>
+#include <CGAL_ext/Geodesics_3/internal/support/Parallel_for.h>
+#include <CGAL_ext/Geodesics_3/internal/support/Solver_arena.h>
 
 #include <algorithm>
 #include <array>
@@ -207,19 +207,7 @@ private:
     update_farthest(m_solver.reached_vertices());
   }
 
-  void add_statistics(const Geodesic_statistics& run)
-  {
-    m_statistics.windows_created += run.windows_created;
-    m_statistics.peak_windows = std::max(m_statistics.peak_windows, run.peak_windows);
-    m_statistics.peak_window_bytes = std::max(m_statistics.peak_window_bytes, run.peak_window_bytes);
-    m_statistics.vertices_popped += run.vertices_popped;
-    m_statistics.lists_propagated += run.lists_propagated;
-    m_statistics.wavefront_resets += run.wavefront_resets;
-    m_statistics.seconds_solve += run.seconds_solve;
-    m_statistics.seconds_selection += run.seconds_selection;
-    m_statistics.seconds_propagation += run.seconds_propagation;
-    m_statistics.seconds_merge += run.seconds_merge;
-  }
+  void add_statistics(const Geodesic_statistics& run) { add_run_statistics(m_statistics, run); }
 
   // Adds to the batch the farthest vertices (the heap's top) whose straight-line distance to
   // every vertex already in the batch is at least their distance to the samples: no path from

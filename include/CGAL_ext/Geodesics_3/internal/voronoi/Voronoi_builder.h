@@ -7,10 +7,10 @@
 // nearest source at any surface point that the path tracer gives exactly.
 
 #include <CGAL_ext/Geodesics_3/internal/kernel/Edge_window_store.h>
-#include <CGAL_ext/Geodesics_3/internal/paths/Geodesic_path_tracer.h>
-#include <CGAL_ext/Geodesics_3/internal/mesh/Solver_mesh.h>
-#include <CGAL_ext/Geodesics_3/internal/support/Parallel_for.h>
 #include <CGAL_ext/Geodesics_3/internal/kernel/Source_windows.h>
+#include <CGAL_ext/Geodesics_3/internal/mesh/Solver_mesh.h>
+#include <CGAL_ext/Geodesics_3/internal/paths/Geodesic_path_tracer.h>
+#include <CGAL_ext/Geodesics_3/internal/support/Parallel_for.h>
 
 #include <algorithm>
 #include <array>
