@@ -293,9 +293,9 @@ detect_repetitive_patterns(const TriangleMesh& tm, const Pattern_patch<TriangleM
   result.statistics = found.statistics;
   if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::statistics_t>::value) {
     typedef std::decay_t<decltype(get_parameter(np, internal_np::statistics))> Given;
-    static_assert(std::is_same<Given, Pattern_statistics*>::value,
+    static_assert(std::is_convertible<Given, Pattern_statistics*>::value,
                   "CGAL_ext: detect_repetitive_patterns() reports a CGAL_ext::Pattern_statistics through `statistics`");
-    *get_parameter(np, internal_np::statistics) = found.statistics;
+    *static_cast<Pattern_statistics*>(get_parameter(np, internal_np::statistics)) = found.statistics;
   }
   if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::vertex_instance_map_t>::value) {
     auto instance_map = get_parameter(np, internal_np::vertex_instance_map);

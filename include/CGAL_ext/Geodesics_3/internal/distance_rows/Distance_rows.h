@@ -2,8 +2,8 @@
 #ifndef CGAL_EXT_GEODESICS_3_INTERNAL_DISTANCE_ROWS_DISTANCE_ROWS_H
 #define CGAL_EXT_GEODESICS_3_INTERNAL_DISTANCE_ROWS_DISTANCE_ROWS_H
 
-// The rows of a distance matrix, dense or sparse: independent single-source solves on one mesh
-// cache, in parallel across sources, handed over in source order from the calling thread.
+// The rows of a distance matrix, dense or sparse: independent single-source solves on one
+// solver mesh, in parallel across sources, handed over in source order from the calling thread.
 
 #include <CGAL_ext/Geodesics_3/Geodesic_algorithm.h>
 #include <CGAL_ext/Geodesics_3/Geodesic_error.h>

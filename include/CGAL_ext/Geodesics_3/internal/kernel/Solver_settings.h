@@ -89,9 +89,9 @@ Solver_settings read_solver_settings(const NamedParameters& np, Geodesic_algorit
 
   if constexpr(!is_default_parameter<NamedParameters, internal_np::statistics_t>::value) {
     typedef std::decay_t<decltype(get_parameter(np, internal_np::statistics))> Given;
-    static_assert(std::is_same<Given, Geodesic_statistics*>::value,
+    static_assert(std::is_convertible<Given, Geodesic_statistics*>::value,
                   "CGAL_ext: this function reports a CGAL_ext::Geodesic_statistics through `statistics`");
-    s.statistics = get_parameter(np, internal_np::statistics);
+    s.statistics = static_cast<Geodesic_statistics*>(get_parameter(np, internal_np::statistics));
   }
   return s;
 }

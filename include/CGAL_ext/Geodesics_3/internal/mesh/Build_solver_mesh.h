@@ -83,6 +83,9 @@ inline void scale_to_unit(Solver_mesh& cache)
       p[i] = std::ldexp(p[i], -exponent);
 }
 
+/// Builds the solver mesh of `tm`. Vertex `v` of `tm` becomes index `cache_vertex(get(vim, v))`, face
+/// `f` becomes index `cache_face(get(fim, f))`. Throws `Geodesic_error` for an empty mesh, a face that is not a triangle,
+/// a non-finite coordinate, or degenerate triangles that cannot be removed.
 template <class TriangleMesh, class VertexPointMap, class VertexIndexMap, class FaceIndexMap>
 void build_solver_mesh(const TriangleMesh& tm, VertexPointMap vpm, VertexIndexMap vim,
                       FaceIndexMap fim, Solver_mesh& cache,

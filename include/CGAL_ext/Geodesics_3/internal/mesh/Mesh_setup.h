@@ -10,7 +10,6 @@
 #include <CGAL_ext/Geodesics_3/Geodesic_error.h>
 #include <CGAL_ext/Geodesics_3/Geodesic_statistics.h>
 #include <CGAL_ext/Geodesics_3/Named_function_parameters.h>
-#include <CGAL_ext/Geodesics_3/internal/kernel/Solver_settings.h>
 #include <CGAL_ext/Geodesics_3/internal/kernel/Source_points.h>
 #include <CGAL_ext/Geodesics_3/internal/mesh/Build_solver_mesh.h>
 
@@ -181,8 +180,10 @@ public:
   void write_vertex_sources(VertexSourceMap map, const std::vector<int>& nearest) const
   {
     typedef typename boost::property_traits<VertexSourceMap>::value_type Index;
+    // none: -1 in a signed map, no_source (the largest value) in an unsigned one
+    const Index none = std::is_signed<Index>::value ? Index(-1) : static_cast<Index>(no_source);
     for_each_vertex([&](vertex_descriptor v, std::size_t i) {
-      put(map, v, nearest[i] < 0 ? static_cast<Index>(no_source) : static_cast<Index>(nearest[i]));
+      put(map, v, nearest[i] < 0 ? none : static_cast<Index>(nearest[i]));
     });
   }
   /// A length or coordinate in the solver mesh's unit, in the mesh's.

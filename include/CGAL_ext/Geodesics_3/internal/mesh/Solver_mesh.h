@@ -473,9 +473,6 @@ inline void Solver_mesh::compute_vertex_flags()
   bbox_diagonal = position.empty() ? 0. : std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
 }
 
-/// Builds the solver mesh of `tm`. Vertex `v` of `tm` becomes index `cache_vertex(get(vim, v))`, face
-/// `f` becomes index `cache_face(get(fim, f))`. Throws `Geodesic_error` for an empty mesh, a face that is not a triangle,
-/// a non-finite coordinate, or degenerate triangles that cannot be removed.
 } // namespace internal
 } // namespace Geodesics_3
 } // namespace CGAL_ext

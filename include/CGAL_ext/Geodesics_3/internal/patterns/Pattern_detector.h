@@ -24,6 +24,7 @@
 #include <CGAL_ext/geodesic_voronoi_diagram.h>
 
 #include <boost/iterator/function_output_iterator.hpp>
+#include <boost/property_map/property_map.hpp>
 
 #include <algorithm>
 #include <array>
@@ -135,7 +136,7 @@ public:
     start = Clock::now();
     place_centres();
     merge_overlapping_instances();
-    m_row_solvers.reset(); // the last row: their cache and solvers go before the arrangement's
+    m_row_solvers.reset(); // the last row: their solver mesh and solvers go before the arrangement's
     m_times->seconds_optimization += seconds_since(start);
     report(Step::arrangement, 0);
     start = Clock::now();
@@ -1239,7 +1240,15 @@ private:
     std::vector<vertex_descriptor> centres;
     for(const Detected_instance& d : result.instances)
       centres.push_back(m_vertex[d.center]);
-    const auto diagram = geodesic_voronoi_diagram<Concurrency>(m_tm, centres, solver_parameters().algorithm(VTP));
+    // each vertex's cell (the index of its nearest centre) and its distance to it, by vertex index
+    std::vector<std::size_t> cell(m_vertex.size(), no_source);
+    std::vector<double> distance(m_vertex.size(), std::numeric_limits<double>::infinity());
+    const auto diagram = geodesic_voronoi_diagram<Concurrency>(
+      m_tm, centres,
+      solver_parameters()
+        .algorithm(VTP)
+        .vertex_source_map(boost::make_iterator_property_map(cell.begin(), m_vim))
+        .vertex_distance_map(boost::make_iterator_property_map(distance.begin(), m_vim)));
     result.arrangement_edges = diagram.dual_edges;
     result.arrangement_triangles = diagram.dual_triangles;
     std::vector<std::size_t> owner(m_sample_vertex.size(), none);
@@ -1248,10 +1257,10 @@ private:
         if(q != Pattern_correspondence::unmapped)
           owner[q] = a;
     for(std::size_t v = 0; v < m_vertex.size(); ++v) {
-      const std::size_t a = diagram.vertex_cell[v];
+      const std::size_t a = cell[v];
       if(a == 0 || a >= result.instances.size())
         continue;
-      const bool near = diagram.vertex_distance[v] <= m_size * result.instances[a].scale;
+      const bool near = distance[v] <= m_size * result.instances[a].scale;
       const bool sampled = m_cell[v] < owner.size() && owner[m_cell[v]] == a;
       if(near || sampled)
         result.instances[a].vertices.push_back(v);
