@@ -20,6 +20,7 @@ run_benchmarks.py (`armadillo@1`: armadillo after one Loop subdivision) or as a 
 Examples:
   python3 bench/compare_commits.py 3311f1a HEAD --mesh armadillo@1 --method vtp,pvtp:2,fwp_mmp,pmmp:2
   python3 bench/compare_commits.py HEAD . --mesh armadillo@1 --method vtp --runs 7 --check --callgrind
+  python3 bench/compare_commits.py OLD NEW --drivers old-build/bench/bench_geodesics build/bench/bench_geodesics
 """
 
 import argparse
@@ -142,6 +143,8 @@ def main():
     p.add_argument("--check", action="store_true", help="compare the distances of the two builds")
     p.add_argument("--callgrind", action="store_true", help="count the instructions of each solve (valgrind)")
     p.add_argument("--work", help="folder of the exports and builds (default: a temporary folder, removed)")
+    p.add_argument("--drivers", nargs=2, metavar=("BASE_BENCH", "NEW_BENCH"),
+                   help="bench_geodesics binaries already built from the two revisions (no export, no build)")
     p.add_argument("--jobs", type=int, default=os.cpu_count() or 2)
     p.add_argument("--timeout", type=float, default=3600)
     p.add_argument("--cache", default=str(rb.DEFAULT_CACHE), help="folder of unpacked and subdivided meshes")
@@ -157,7 +160,10 @@ def main():
     work_folder = args.work or tempfile.mkdtemp(prefix="compare_commits_")
     work = Path(work_folder)
     try:
-        drivers = [build(repo, rev, short, work, args.jobs) for rev, short in revs]
+        if args.drivers:
+            drivers = [Path(d).resolve() for d in args.drivers]
+        else:
+            drivers = [build(repo, rev, short, work, args.jobs) for rev, short in revs]
         args.driver = drivers[-1]  # subdivides the meshes that need it
         args.mem_limit_mb = None
         meshes = [(spec, mesh_path(spec, args)) for spec in args.mesh.split(",")]
