@@ -159,6 +159,7 @@ def main():
 
     work_folder = args.work or tempfile.mkdtemp(prefix="compare_commits_")
     work = Path(work_folder)
+    work.mkdir(parents=True, exist_ok=True)
     try:
         if args.drivers:
             drivers = [Path(d).resolve() for d in args.drivers]
