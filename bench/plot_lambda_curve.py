@@ -28,6 +28,18 @@ def number(text):
         return None
 
 
+def lambda_axes(ax, ticks, xlabel):
+    """Log-log axes over lambda, a tick at each lambda measured (shared with doc/make_figures.py)."""
+    import matplotlib.ticker
+    ax.set_xscale("log", base=2)
+    ax.set_yscale("log")
+    ax.set_xticks(ticks)
+    ax.set_xticklabels(["%g" % t for t in ticks])
+    ax.xaxis.set_minor_locator(matplotlib.ticker.NullLocator())
+    ax.set_xlabel(xlabel)
+    ax.grid(True, which="both", alpha=0.3)
+
+
 def read_curves(path):
     """{mesh label: {'vertices', 'lambda': [...], 'error': [...], 'seconds': [...], 'vtp_seconds'}}."""
     curves = {}
@@ -88,13 +100,7 @@ def main():
             ax_time.axhline(c["vtp_seconds"], color=color, linestyle="--", linewidth=1, label="VTP, " + mesh)
     ticks = sorted({l for c in curves.values() for l in c["lambda"] if l})
     for ax in (ax_err, ax_time):
-        ax.set_xscale("log", base=2)
-        ax.set_yscale("log")
-        ax.set_xticks(ticks)
-        ax.set_xticklabels(["%g" % t for t in ticks])
-        ax.xaxis.set_minor_locator(matplotlib.ticker.NullLocator())
-        ax.set_xlabel("λ (reset step, in mean edge lengths)")
-        ax.grid(True, which="both", alpha=0.3)
+        lambda_axes(ax, ticks, "λ (reset step, in mean edge lengths)")
         ax.legend(fontsize=8)
     ax_err.set_ylabel("mean relative error (%)")
     ax_err.set_title("AVTP: mean relative error against VTP")

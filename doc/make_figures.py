@@ -766,14 +766,10 @@ def fig_avtp_error_lambda(tool, out, work, args):
         ax_time.plot(lam[default], seconds[default], "o", markersize=11, markerfacecolor="none", color="black",
                      label="λ = 8, the default")
     ticks = sorted({float(r["lambda"]) for r in rows})
+    sys.path.insert(0, str(REPO / "bench"))
+    from plot_lambda_curve import lambda_axes  # the axes of bench/results/lambda_curve.png
     for ax in (ax_err, ax_time):
-        ax.set_xscale("log", base=2)
-        ax.set_yscale("log")
-        ax.set_xticks(ticks)
-        ax.set_xticklabels(["%g" % t for t in ticks])
-        ax.xaxis.set_minor_locator(matplotlib.ticker.NullLocator())
-        ax.set_xlabel("λ (smaller: faster, coarser)")
-        ax.grid(True, which="both", alpha=0.3)
+        lambda_axes(ax, ticks, "λ (smaller: faster, coarser)")
         ax.tick_params(labelsize=8)
         ax.legend(fontsize=7, loc="upper right" if ax is ax_err else "lower right")
         ax.yaxis.set_major_formatter(matplotlib.ticker.FuncFormatter(lambda y, _: "%g" % y))
