@@ -18,8 +18,11 @@
 #include <CGAL_ext/Geodesics_3/internal/voronoi/Voronoi_diagram_assembly.h>
 
 #include <CGAL/Kernel_traits.h>
+#include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/Polygon_mesh_processing/locate.h>
 #include <CGAL/tags.h>
+
+#include <boost/property_map/property_map.hpp>
 
 #include <algorithm>
 #include <array>
@@ -160,12 +163,13 @@ geodesic_voronoi_diagram(const TriangleMesh& tm, const Sources& sources,
   if constexpr(distance_map)
     mesh.write_vertex_distances(parameters::get_parameter(np, internal_np::vertex_distance_map), solver.distances());
   if constexpr(!source_map && !distance_map) { // the deprecated vectors, for callers that pass no map
-    const std::vector<int>& nearest = solver.nearest_sources();
-    for(std::size_t i = 0; i < cache.number_of_mesh_vertices; ++i) {
-      const std::size_t v = std::size_t(cache.cache_vertex(int(i)));
-      diagram.vertex_cell.push_back(nearest[v] < 0 ? no_source : std::size_t(nearest[v]));
-      diagram.vertex_distance.push_back(mesh.to_mesh_unit(solver.distances()[v]));
-    }
+    const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
+    diagram.vertex_cell.resize(cache.number_of_mesh_vertices);
+    diagram.vertex_distance.resize(cache.number_of_mesh_vertices);
+    mesh.write_vertex_sources(boost::make_iterator_property_map(diagram.vertex_cell.begin(), vim),
+                              solver.nearest_sources());
+    mesh.write_vertex_distances(boost::make_iterator_property_map(diagram.vertex_distance.begin(), vim),
+                                solver.distances());
   }
   internal::assemble_voronoi_diagram<Point_3>(mesh, builder, diagram);
   Geodesic_statistics statistics = build.statistics();
