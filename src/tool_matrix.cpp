@@ -169,41 +169,6 @@ std::vector<std::size_t> target_columns(const Matrix_options& options, const std
   return columns;
 }
 
-/// The columns of each mesh vertex: those whose file point is that vertex (a point may be a
-/// column several times, and merged points share a vertex), by increasing column.
-class Columns_of_vertices
-{
-public:
-  Columns_of_vertices(const Mesh_file& file, const std::vector<std::size_t>& columns)
-    : m_begin(file.mesh.number_of_vertices() + 1, 0)
-    , m_column(columns.size())
-  {
-    for(std::size_t p : columns)
-      ++m_begin[file.vertex_of_point[p].idx() + 1];
-    std::partial_sum(m_begin.begin(), m_begin.end(), m_begin.begin());
-    std::vector<std::size_t> next(m_begin.begin(), m_begin.end() - 1);
-    for(std::size_t j = 0; j < columns.size(); ++j)
-      m_column[next[file.vertex_of_point[columns[j]].idx()]++] = j;
-  }
-  struct Range
-  {
-    const std::size_t *first, *last;
-    const std::size_t* begin() const { return first; }
-    const std::size_t* end() const { return last; }
-  };
-  /// The columns of the vertex of index v.
-  Range vertex(std::size_t v) const
-  {
-    if(v + 1 >= m_begin.size())
-      return Range{nullptr, nullptr};
-    return Range{m_column.data() + m_begin[v], m_column.data() + m_begin[v + 1]};
-  }
-
-private:
-  std::vector<std::size_t> m_begin; // by vertex index: where its columns start in m_column
-  std::vector<std::size_t> m_column;
-};
-
 std::string gigabytes(double bytes)
 {
   char text[32];

@@ -5,9 +5,12 @@
 #ifndef GEODESIC_TOOL_MATRIX_H
 #define GEODESIC_TOOL_MATRIX_H
 
+#include "tool_mesh.h"
+
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <numeric>
 #include <optional>
 #include <ostream>
 #include <string>
@@ -29,6 +32,41 @@ struct Matrix_options
   std::optional<int> threads;
   std::string output;
   bool stats = false;
+};
+
+/// The columns of each mesh vertex: those whose file point is that vertex (a point may be a
+/// column several times, and merged points share a vertex), by increasing column.
+class Columns_of_vertices
+{
+public:
+  Columns_of_vertices(const Mesh_file& file, const std::vector<std::size_t>& columns)
+    : m_begin(file.mesh.number_of_vertices() + 1, 0)
+    , m_column(columns.size())
+  {
+    for(std::size_t p : columns)
+      ++m_begin[file.vertex_of_point[p].idx() + 1];
+    std::partial_sum(m_begin.begin(), m_begin.end(), m_begin.begin());
+    std::vector<std::size_t> next(m_begin.begin(), m_begin.end() - 1);
+    for(std::size_t j = 0; j < columns.size(); ++j)
+      m_column[next[file.vertex_of_point[columns[j]].idx()]++] = j;
+  }
+  struct Range
+  {
+    const std::size_t *first, *last;
+    const std::size_t* begin() const { return first; }
+    const std::size_t* end() const { return last; }
+  };
+  /// The columns of the vertex of index v.
+  Range vertex(std::size_t v) const
+  {
+    if(v + 1 >= m_begin.size())
+      return Range{nullptr, nullptr};
+    return Range{m_column.data() + m_begin[v], m_column.data() + m_begin[v + 1]};
+  }
+
+private:
+  std::vector<std::size_t> m_begin; // by vertex index: where its columns start in m_column
+  std::vector<std::size_t> m_column;
 };
 
 void add_matrix_command(CLI::App& app, Matrix_options& options);

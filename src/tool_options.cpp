@@ -178,6 +178,8 @@ Solver_choice solver_choice(const Solver_options& options, bool exact_only)
       throw applies_to("--threads", [](const Algorithm& a) { return a.parallel; });
     if(*options.threads < 1)
       throw invalid("--threads", "a positive integer", *options.threads);
+    if(*options.threads > max_threads)
+      throw invalid("--threads", ("at most " + std::to_string(max_threads)).c_str(), *options.threads);
     choice.threads = *options.threads;
   }
   if(options.batch_size) {

@@ -10,6 +10,7 @@
 
 #include <array>
 #include <cstddef>
+#include <functional>
 #include <limits>
 #include <optional>
 #include <string>
@@ -101,6 +102,8 @@ inline const Algorithm algorithms[] = {
 inline bool is_mmp_family(const Algorithm& a) { return a.library != CGAL_ext::VTP; }
 
 constexpr double default_lambda = 8;
+/// More threads than this are refused: TBB's arenas fail far below what an int holds.
+constexpr int max_threads = 1024;
 
 /// The validated choice of solver and its parameters.
 struct Solver_choice
@@ -110,6 +113,9 @@ struct Solver_choice
   int threads = 0;                // parallel solvers only; 0: TBB's default
   std::size_t batch_size = CGAL_ext::default_batch_size;
   double max_distance = std::numeric_limits<double>::infinity();
+  /// The library's `callback`: told the fraction done, false cancels (the tool shows its own
+  /// progress lines without one; the Python module passes Ctrl-C and the caller's callback).
+  std::function<bool(double)> callback;
 };
 
 /// Checks the solver options of `distances`, or of `path` and `voronoi` (`exact_only`: every

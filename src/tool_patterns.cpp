@@ -194,23 +194,13 @@ bool write_instances_json(std::ostream& os, const std::vector<Found_instance>& i
   return bool(os);
 }
 
-namespace {
-
-struct Patterns_found
-{
-  std::vector<Found_instance> instances;
-  std::vector<long> labels; // per point of the file
-  std::vector<std::pair<std::size_t, std::size_t>> edges;
-  std::vector<std::array<std::size_t, 3>> triangles;
-  CGAL_ext::Pattern_statistics stats;
-};
-
-Patterns_found detect(const Mesh_file& file, const CGAL_ext::Pattern_patch<Mesh>& patch, const Patterns_options& o,
-                      std::pair<double, double> scales, const std::vector<Vertex_index>& stroke)
+Patterns_found detect_patterns(const Mesh_file& file, const CGAL_ext::Pattern_patch<Mesh>& patch,
+                               const Patterns_options& o, std::pair<double, double> scales,
+                               const std::vector<Vertex_index>& stroke, const std::function<bool(double)>& callback)
 {
   const Thread_allowance allowance(o.threads);
   Progress_line progress;
-  const std::function<bool(double)> show_progress = [&progress](double done) {
+  const std::function<bool(double)> show_progress = callback ? callback : [&progress](double done) {
     progress.show_percent("patterns", done);
     return true;
   };
@@ -252,8 +242,6 @@ Patterns_found detect(const Mesh_file& file, const CGAL_ext::Pattern_patch<Mesh>
   out.stats = statistics;
   return out;
 }
-
-} // namespace
 
 int run_patterns(const Patterns_options& options)
 {
@@ -319,7 +307,7 @@ int run_patterns(const Patterns_options& options)
   }
 
   const Stopwatch detect_watch;
-  const Patterns_found found = detect(file, patch, options, scales, stroke);
+  const Patterns_found found = detect_patterns(file, patch, options, scales, stroke, {});
   const double seconds_detect = detect_watch.seconds();
 
   std::vector<Output_file> outputs{{options.output, [&](std::ostream& os) {

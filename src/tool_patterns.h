@@ -7,8 +7,11 @@
 
 #include "tool_mesh.h"
 
+#include <CGAL_ext/detect_repetitive_patterns.h>
+
 #include <array>
 #include <cstddef>
+#include <functional>
 #include <istream>
 #include <ostream>
 #include <string>
@@ -51,6 +54,23 @@ struct Found_instance
   std::vector<std::size_t> vertices;
   std::vector<std::pair<std::size_t, std::size_t>> correspondence;
 };
+
+/// What the detection found, in the file's ids: the instances, the instance of each point of the
+/// file (-1: none), and the arrangement's edges and triangles between instances.
+struct Patterns_found
+{
+  std::vector<Found_instance> instances;
+  std::vector<long> labels; // per point of the file
+  std::vector<std::pair<std::size_t, std::size_t>> edges;
+  std::vector<std::array<std::size_t, 3>> triangles;
+  CGAL_ext::Pattern_statistics stats;
+};
+
+/// Runs the library's detection of the pattern `patch` marks; `callback` (when not empty) is
+/// told the fraction done and may cancel, otherwise a progress line is shown on a terminal.
+Patterns_found detect_patterns(const Mesh_file& file, const CGAL_ext::Pattern_patch<Mesh>& patch,
+                               const Patterns_options& options, std::pair<double, double> scales,
+                               const std::vector<Vertex_index>& stroke, const std::function<bool(double)>& callback);
 
 void add_patterns_command(CLI::App& app, Patterns_options& options);
 

@@ -29,7 +29,7 @@ namespace geodesic_tool {
 namespace {
 
 const double infinity = std::numeric_limits<double>::infinity();
-typedef Mesh::Property_map<Vertex_index, double> Distance_map;
+typedef decltype(CGAL::make_property_map(std::declval<std::vector<double>&>())) Distance_map;
 /// The nearest source of each vertex, by vertex index, where the caller wants it; nothing
 /// otherwise (a map per vertex less during the solve), with one instantiation of the library
 /// call for both.
@@ -53,24 +53,17 @@ typedef CGAL::Parallel_tag Parallel_tag;
 typedef CGAL::Sequential_tag Parallel_tag; // never run: solver_choice() refuses the parallel solvers
 #endif
 
+} // namespace
+
 /// The vertex of the mesh of a vertex id of the file.
 Vertex_index mesh_vertex(const Mesh_file& file, const Surface_point& s) { return file.vertex_of_point[*s.vertex]; }
 
-/// A face point of the command line (barycentric coordinates in the file's order of the face's
-/// vertices) in the library's order of the corners of its face of the mesh.
-Face_location library_location(const Mesh_file& file, const Surface_point& s, const char* role)
+std::array<int, 3> polygon_corners(const Mesh_file& file, std::size_t polygon_id, Face_index f)
 {
-  const Face_index f = file.face_of_polygon[s.face];
-  const Polygons::Polygon polygon = file.soup.polygons[s.face];
-  if(f == Mesh::null_face())
-    throw Tool_error(std::string(role) + " '" + s.text + "': face " + std::to_string(s.face) +
-                     " of the file is not a triangle of the surface (" +
-                     (polygon.size() == 3 ? std::string("its 3 vertices are not distinct points")
-                                          : "it has " + std::to_string(polygon.size()) + " vertices") +
-                     ")");
   // The face may start at another corner, and run the other way if the face was reversed to
   // orient the surface. Its corners are the polygon's points' vertices, or copies of them (made
   // at non-manifold points), found then by position.
+  const Polygons::Polygon polygon = file.soup.polygons[polygon_id];
   std::array<Vertex_index, 3> corners;
   int k = 0;
   for(auto h : CGAL::halfedges_around_face(file.mesh.halfedge(f), file.mesh))
@@ -87,6 +80,22 @@ Face_location library_location(const Mesh_file& file, const Surface_point& s, co
           taken[j] = true;
         }
       }
+  return point_of_corner;
+}
+
+/// A face point of the command line (barycentric coordinates in the file's order of the face's
+/// vertices) in the library's order of the corners of its face of the mesh.
+Face_location library_location(const Mesh_file& file, const Surface_point& s, const char* role)
+{
+  const Face_index f = file.face_of_polygon[s.face];
+  const Polygons::Polygon polygon = file.soup.polygons[s.face];
+  if(f == Mesh::null_face())
+    throw Tool_error(std::string(role) + " '" + s.text + "': face " + std::to_string(s.face) +
+                     " of the file is not a triangle of the surface (" +
+                     (polygon.size() == 3 ? std::string("its 3 vertices are not distinct points")
+                                          : "it has " + std::to_string(polygon.size()) + " vertices") +
+                     ")");
+  const std::array<int, 3> point_of_corner = polygon_corners(file, s.face, f);
   Face_location location(f, {{0., 0., 0.}});
   for(std::size_t c = 0; c < 3; ++c)
     location.second[c] = point_of_corner[c] >= 0 ? s.barycentric[std::size_t(point_of_corner[c])] : 0.;
@@ -133,6 +142,8 @@ void check_a_source_is_on_a_face(const Mesh_file& file, const std::vector<Surfac
                      : std::string("every source is a vertex in no face of the mesh, so they reach no other vertex"));
 }
 
+namespace {
+
 /// Calls `f` with the sources as the library takes them: a range of one kind, vertices when all
 /// are vertices, face locations otherwise (a vertex as a corner of one of its faces).
 template <class Function>
@@ -163,7 +174,7 @@ void with_solver(const Solver_choice& choice, const NamedParameters& np, Functio
     else
       f(tag, p);
   };
-  const auto batched = np.batch_size(choice.batch_size);
+  const auto batched = np.batch_size(choice.batch_size).callback(choice.callback);
   if(choice.algorithm->parallel) {
     const Thread_allowance allowance(choice.threads);
     with_approximation(Parallel_tag(), batched.number_of_threads(choice.threads));
@@ -200,6 +211,7 @@ Path_result trace_path_with(const Mesh_file& file, const std::vector<Surface_poi
   {
     const Thread_allowance allowance(choice.algorithm->parallel ? choice.threads : 0);
     paths.build(CGAL_ext::parameters::max_distance(choice.max_distance)
+                  .callback(choice.callback)
                   .statistics(result.stats)
                   .batch_size(choice.batch_size)
                   .number_of_threads(choice.algorithm->parallel ? choice.threads : 0)
@@ -236,13 +248,14 @@ int effective_threads(const Solver_choice& choice)
   return choice.threads;
 }
 
-std::vector<double> compute_distances(Mesh_file& file, const std::vector<Surface_point>& sources,
+std::vector<double> compute_distances(const Mesh_file& file, const std::vector<Surface_point>& sources,
                                       const Solver_choice& choice, CGAL_ext::Geodesic_statistics& stats,
                                       std::vector<long>* nearest_source)
 {
   check_a_source_is_on_a_face(file, sources);
-  Mesh& mesh = file.mesh;
-  auto distance = mesh.add_property_map<Vertex_index, double>("v:distance", infinity).first;
+  const Mesh& mesh = file.mesh;
+  std::vector<double> distance_of_vertex(mesh.num_vertices(), infinity);
+  const Distance_map distance = CGAL::make_property_map(distance_of_vertex);
   std::vector<long> label_of_vertex(nearest_source ? mesh.num_vertices() : 0, -1);
   const Label_map label{nearest_source ? &label_of_vertex : nullptr};
   with_library_sources(file, sources, [&](const auto& library_sources) {
@@ -251,8 +264,7 @@ std::vector<double> compute_distances(Mesh_file& file, const std::vector<Surface
   std::vector<double> distance_of_point;
   distance_of_point.reserve(file.vertex_of_point.size());
   for(Vertex_index v : file.vertex_of_point)
-    distance_of_point.push_back(distance[v]);
-  mesh.remove_property_map(distance);
+    distance_of_point.push_back(distance_of_vertex[v.idx()]);
   if(nearest_source) {
     nearest_source->clear();
     for(Vertex_index v : file.vertex_of_point)
@@ -334,7 +346,8 @@ Sampling_result compute_samples(const Mesh_file& file, const Sampling_request& r
   Progress_line progress;
   auto on_sample = boost::make_function_output_iterator([&](Vertex_index v) {
     result.samples.push_back(point[v.idx()]);
-    progress.show("sample", result.samples.size(), request.count);
+    if(!choice.callback)
+      progress.show("sample", result.samples.size(), request.count);
   });
   const Mesh& mesh = file.mesh;
   auto distance = get(CGAL::dynamic_vertex_property_t<double>(), mesh);
@@ -380,6 +393,7 @@ Voronoi_result compute_voronoi(const Mesh_file& file, const std::vector<Surface_
   std::vector<double> distance(file.mesh.number_of_vertices());
   const auto np = CGAL_ext::parameters::glued_vertices(file.glued_vertices)
                     .batch_size(choice.batch_size)
+                    .callback(choice.callback)
                     .algorithm(choice.algorithm->library)
                     .vertex_source_map(CGAL::make_property_map(cell))
                     .vertex_distance_map(CGAL::make_property_map(distance));

@@ -20,6 +20,25 @@
 
 namespace geodesic_tool {
 
+/// The vertex of the mesh of a vertex id of the file.
+Vertex_index mesh_vertex(const Mesh_file& file, const Surface_point& s);
+
+/// Which of the 3 points of triangle `polygon` of the file (0, 1, 2) is each corner of face `f`
+/// of the mesh made of it, in the mesh's order of the corners; -1 for none.
+std::array<int, 3> polygon_corners(const Mesh_file& file, std::size_t polygon, Face_index f);
+
+/// A face point of the file (barycentric coordinates in the file's order of the face's
+/// vertices) in the library's order of the corners of its face of the mesh; throws Tool_error,
+/// naming `role`, when the face is not a triangle of the mesh.
+Face_location library_location(const Mesh_file& file, const Surface_point& s, const char* role);
+
+/// A vertex source as a corner of one of its faces, so that it can join face-point sources;
+/// throws Tool_error for a vertex in no face.
+Face_location vertex_location(const Mesh_file& file, const Surface_point& s);
+
+/// Throws Tool_error when every source is a vertex in no face: no other vertex would be reached.
+void check_a_source_is_on_a_face(const Mesh_file& file, const std::vector<Surface_point>& sources);
+
 /// The number of threads a parallel solver runs on.
 int effective_threads(const Solver_choice& choice);
 
@@ -27,7 +46,7 @@ int effective_threads(const Solver_choice& choice);
 /// and, unless `nearest_source` is null, fills it with the index of each point's nearest source
 /// (-1 where none reaches). Throws Tool_error when a face point's face is not a triangle of the
 /// mesh, or when every source is a vertex in no face.
-std::vector<double> compute_distances(Mesh_file& file, const std::vector<Surface_point>& sources,
+std::vector<double> compute_distances(const Mesh_file& file, const std::vector<Surface_point>& sources,
                                       const Solver_choice& choice, CGAL_ext::Geodesic_statistics& stats,
                                       std::vector<long>* nearest_source);
 

@@ -9,6 +9,7 @@
 
 #include <CGAL_ext/Surface_mesh_geodesic_paths.h>
 #include <CGAL_ext/detect_repetitive_patterns.h>
+#include <CGAL_ext/farthest_point_sampling.h>
 #include <CGAL_ext/geodesic_distance_matrix.h>
 #include <CGAL_ext/geodesic_distances.h>
 #include <CGAL_ext/geodesic_voronoi_diagram.h>
@@ -17,7 +18,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstddef>
+#include <functional>
+#include <iterator>
+#include <string>
 #include <type_traits>
 #include <vector>
 
@@ -160,6 +165,96 @@ TEST(Conventions, pattern_instances_through_a_vertex_map_and_statistics_through_
   EXPECT_EQ(stats.matches, found.statistics.matches);
   EXPECT_EQ(stats.seconds_sampling, found.statistics.seconds_sampling);
   EXPECT_GT(stats.seconds_sampling, 0.);
+}
+
+/// A `callback` that records the fractions it is told, and answers `go_on`.
+struct Recording_callback
+{
+  std::vector<double> fractions;
+  bool go_on = true;
+  std::function<bool(double)> function()
+  {
+    return [this](double f) {
+      fractions.push_back(f);
+      return go_on;
+    };
+  }
+  /// The fractions were in [0, 1] and never went back.
+  void check(const std::string& what) const
+  {
+    for(std::size_t i = 0; i < fractions.size(); ++i) {
+      EXPECT_GE(fractions[i], 0.) << what;
+      EXPECT_LE(fractions[i], 1.) << what;
+      if(i > 0)
+        EXPECT_GE(fractions[i], fractions[i - 1]) << what;
+    }
+  }
+};
+
+/// Runs `solve(callback)` twice: told to go on, it reports and finishes; told to stop, it
+/// throws Geodesic_cancelled at its first report. `solve` fills what `untouched` checks.
+template <class Solve, class Untouched>
+void check_callback(const std::string& what, Solve solve, Untouched untouched)
+{
+  Recording_callback going_on;
+  solve(going_on.function());
+  EXPECT_GE(going_on.fractions.size(), 1u) << what << ": the callback is called at least once";
+  going_on.check(what);
+  Recording_callback stopping;
+  stopping.go_on = false;
+  EXPECT_THROW(solve(stopping.function()), CGAL_ext::Geodesic_cancelled) << what;
+  EXPECT_EQ(stopping.fractions.size(), 1u) << what << ": cancelled at the first report";
+  untouched(what);
+}
+
+TEST(Conventions, callback_reports_progress_and_cancels_leaving_the_maps_untouched)
+{
+  const Mesh& m = test_mesh("elephant");
+  const std::size_t n = m.number_of_vertices();
+  std::vector<double> distance(n, -7.);
+  std::vector<long> label(n, -7);
+  const auto still_sentinels = [&](const std::string& what) {
+    EXPECT_TRUE(std::all_of(distance.begin(), distance.end(), [](double d) { return d == -7.; })) << what;
+    EXPECT_TRUE(std::all_of(label.begin(), label.end(), [](long l) { return l == -7; })) << what;
+  };
+  // (each solve starts from the sentinels: a cancelled one must leave them)
+  const auto np_with = [&](const std::function<bool(double)>& callback) {
+    std::fill(distance.begin(), distance.end(), -7.);
+    std::fill(label.begin(), label.end(), -7);
+    return CGAL_ext::parameters::callback(callback).vertex_source_map(CGAL::make_property_map(label));
+  };
+  for(const CGAL_ext::Geodesic_algorithm algorithm : {CGAL_ext::VTP, CGAL_ext::FWP_MMP, CGAL_ext::MMP}) {
+    const std::string what = "geodesic_distances, algorithm " + std::to_string(int(algorithm));
+    check_callback(what, [&](const std::function<bool(double)>& callback) {
+      CGAL_ext::geodesic_distances(m, CGAL::make_property_map(distance), Vertex(0),
+                                   np_with(callback).algorithm(algorithm));
+    }, still_sentinels);
+  }
+  for(int threads : {1, 2, 4}) {
+    const std::string what = "PVTP on " + std::to_string(threads) + " threads";
+    check_callback(what, [&](const std::function<bool(double)>& callback) {
+      CGAL_ext::geodesic_distances<CGAL::Parallel_tag>(m, CGAL::make_property_map(distance), Vertex(0),
+                                                       np_with(callback).number_of_threads(threads));
+    }, still_sentinels);
+  }
+  check_callback("farthest-point sampling", [&](const std::function<bool(double)>& callback) {
+    std::vector<Vertex> samples;
+    CGAL_ext::farthest_point_sampling(m, 20, std::back_inserter(samples),
+                                      np_with(callback).vertex_distance_map(CGAL::make_property_map(distance)));
+  }, still_sentinels);
+  const std::vector<Vertex> rows = {Vertex(0), Vertex(100), Vertex(300), Vertex(700), Vertex(1000), Vertex(2000)};
+  std::size_t rows_received = 0;
+  check_callback("distance rows", [&](const std::function<bool(double)>& callback) {
+    rows_received = 0;
+    CGAL_ext::geodesic_distance_rows<CGAL::Parallel_tag>(
+      m, rows, [&](std::size_t, const std::vector<double>&) { ++rows_received; },
+      CGAL_ext::parameters::callback(callback).number_of_threads(2));
+  }, [&](const std::string& what) { EXPECT_LT(rows_received, rows.size()) << what << ": the rows stop"; });
+  CGAL_ext::Surface_mesh_geodesic_paths<Mesh> paths(m);
+  paths.add_source(Vertex(0));
+  check_callback("paths build", [&](const std::function<bool(double)>& callback) {
+    paths.build(CGAL_ext::parameters::callback(callback));
+  }, [&](const std::string& what) { EXPECT_FALSE(paths.is_built()) << what; });
 }
 
 } // namespace conventions

@@ -228,6 +228,12 @@ public:
   ///     \cgalParamType{`double`, non-negative}
   ///     \cgalParamDefault{`+infinity`}
   ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{callback}
+  ///     \cgalParamDescription{told the fraction of the build done, a few times a second at most, from
+  ///                           the calling thread; returning `false` stops with `Geodesic_cancelled` and no result}
+  ///     \cgalParamType{callable as `bool(double)`}
+  ///     \cgalParamDefault{none}
+  ///   \cgalParamNEnd
   ///   \cgalParamNBegin{statistics}
   ///     \cgalParamDescription{receives windows created and kept, memory and seconds per phase}
   ///     \cgalParamType{`CGAL_ext::Geodesic_statistics&`}

@@ -11,6 +11,7 @@
 #include <CGAL_ext/Geodesics_3/Named_function_parameters.h>
 #include <CGAL_ext/Geodesics_3/internal/mesh/Mesh_setup.h>
 #include <CGAL_ext/Geodesics_3/internal/sampling/Farthest_point_sampler.h>
+#include <CGAL_ext/Geodesics_3/internal/support/Progress_reporter.h>
 #include <CGAL_ext/Geodesics_3/internal/support/Solver_arena.h>
 
 #include <CGAL/iterator.h>
@@ -22,6 +23,7 @@
 #include <cstddef>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace CGAL_ext {
@@ -114,6 +116,12 @@ namespace CGAL_ext {
 ///   \cgalParamNBegin{glued_vertices}
 ///     \cgalParamDescription{as in `geodesic_distances()`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{callback}
+///     \cgalParamDescription{told the fraction of the samples found (or of the covering radius reached), a few times a second at most, from
+///                           the calling thread; returning `false` stops with `Geodesic_cancelled`, the maps untouched}
+///     \cgalParamType{callable as `bool(double)`}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{statistics}
 ///     \cgalParamDescription{receives the windows and seconds of the samples' propagations together (not of
 ///                           the solve that finds the default first sample)}
@@ -197,13 +205,19 @@ OutputIterator farthest_point_sampling(const TriangleMesh& tm, std::size_t numbe
     initial.push_back(mesh.index(get_parameter(np, internal_np::first_sample)));
     internal::check_vertex_index(cache, initial.back(), "first sample");
   } else {
-    initial.push_back(internal::default_first_sample<parallel>(cache, settings));
+    // (without the callback: the sampling reports, from the start, the samples found)
+    internal::Solver_settings first_settings = settings;
+    first_settings.callback = {};
+    initial.push_back(internal::default_first_sample<parallel>(cache, first_settings));
   }
   const double seconds_setup = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   auto radius_out = parameters::choose_parameter(get_parameter(np, internal_np::covering_radius_output_iterator),
                                                  CGAL::Emptyset_iterator());
-  internal::Farthest_point_sampler<parallel> sampler(cache, settings);
+  // The sampler's solvers run on any thread: the caller's callback is told of the samples here.
+  internal::Solver_settings sampler_settings = settings;
+  internal::Progress_reporter progress(std::exchange(sampler_settings.callback, {}), "farthest-point sampling");
+  internal::Farthest_point_sampler<parallel> sampler(cache, sampler_settings);
   const auto enough = [&](std::size_t count, double covering) {
     return count == number_of_samples || (radius > 0 && mesh.to_mesh_unit(covering) <= radius);
   };
@@ -223,6 +237,10 @@ OutputIterator farthest_point_sampling(const TriangleMesh& tm, std::size_t numbe
       throw Geodesic_error("asked for " + std::to_string(number_of_samples) + " samples, but after " +
                            std::to_string(sampler.samples().size()) +
                            " every vertex is a sample or at distance 0 from one: no other distinct sample exists");
+    progress.report([&] {
+      return std::max(double(sampler.samples().size()) / double(number_of_samples),
+                      radius > 0 ? radius / mesh.to_mesh_unit(covering) : 0.);
+    });
     sampler.add_samples(sampler.farthest_vertex(), enough);
   }
 

@@ -39,13 +39,15 @@ namespace CGAL_ext {
 ///        `j` (the `vertex_index_map`), `+infinity` where unreached or beyond `max_distance`;
 ///        the vector is reused after the call returns
 /// \param np optional named parameters: `max_distance` (the rows of a local, sparse matrix),
-///        `approximation`, `number_of_threads`, `glued_vertices`, `statistics` (a
+///        `approximation`, `number_of_threads`, `glued_vertices`, `callback` (told the fraction
+///        of the rows done before each batch of rows; `false` stops), `statistics` (a
 ///        `Geodesic_statistics&`: the rows' windows and seconds of solve summed, the largest peak of
 ///        one row), and CGAL's `vertex_point_map`, `vertex_index_map` and `face_index_map`, as for
 ///        `geodesic_distances()`
 ///
 /// \throws Geodesic_error for what `geodesic_distances()` throws, when there is no source, or
-///         when `algorithm` is not `CGAL_ext::VTP`
+///         when `algorithm` is not `CGAL_ext::VTP`; `Geodesic_cancelled` when the `callback`
+///         returned `false` (the rows handed over until then stay handed over)
 template <class ConcurrencyTag = CGAL::Sequential_tag, class TriangleMesh, class Sources, class RowFunction,
           class NamedParameters = parameters::Default_named_parameters_type>
 void geodesic_distance_rows(const TriangleMesh& tm, const Sources& sources, RowFunction row,

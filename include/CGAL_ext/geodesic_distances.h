@@ -113,6 +113,14 @@ namespace CGAL_ext {
 ///     \cgalParamType{a range of ranges of `boost::graph_traits<TriangleMesh>::%vertex_descriptor`}
 ///     \cgalParamDefault{none: vertices at one place stay apart (the two sides of a cut)}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{callback}
+///     \cgalParamDescription{told the fraction of the run done, in [0, 1] and never decreasing, from the
+///                           calling thread, at the first check and then at most ten times a second;
+///                           returning `false` stops the run with `Geodesic_cancelled`, the maps
+///                           untouched}
+///     \cgalParamType{callable as `bool(double)`, e.g. `std::function<bool(double)>`}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{statistics}
 ///     \cgalParamDescription{receives windows created, peak live windows and seconds}
 ///     \cgalParamType{`CGAL_ext::Geodesic_statistics&`}
@@ -141,7 +149,8 @@ namespace CGAL_ext {
 ///         coordinate or only degenerate triangles, when a source, stop or glued vertex is out of
 ///         range, when every source is an isolated vertex,
 ///         when barycentric coordinates are not a convex combination, or when `max_distance` is
-///         negative, `approximation` not positive, `number_of_threads` negative or `batch_size` zero.
+///         negative, `approximation` not positive, `number_of_threads` negative or `batch_size` zero;
+///         `Geodesic_cancelled` when the `callback` returned `false`.
 template <class ConcurrencyTag = CGAL::Sequential_tag, class TriangleMesh, class VertexDistanceMap,
           class Sources, class NamedParameters = parameters::Default_named_parameters_type>
 void geodesic_distances(const TriangleMesh& tm, VertexDistanceMap vertex_distance_map,

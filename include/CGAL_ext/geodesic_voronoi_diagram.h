@@ -115,7 +115,7 @@ struct Geodesic_voronoi_diagram
 /// \param tm the triangle mesh
 /// \param sources the sites of the diagram; a duplicated source has an empty cell
 /// \param np optional named parameters: `algorithm` (`VTP`, the default, `FWP_MMP` or `MMP`), `number_of_threads`,
-///        `batch_size`, `glued_vertices`, `statistics` (a `Geodesic_statistics&`: the build's, and
+///        `batch_size`, `glued_vertices`, `callback` (as for the paths' `build()`), `statistics` (a `Geodesic_statistics&`: the build's, and
 ///        `seconds_diagram`), `vertex_source_map` (receives each vertex's cell: the index of its nearest
 ///        source, `no_source` where none), `vertex_distance_map` (receives each vertex's distance to it),
 ///        and CGAL's `vertex_point_map`, `vertex_index_map`, `face_index_map`, as for `geodesic_distances()`

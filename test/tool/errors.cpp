@@ -119,6 +119,7 @@ const Bad_case bad_cases[] = {
   {"lambda_with_vtp", E + " --source 0 --lambda 8 --algorithm vtp", "d.txt", "error: --lambda applies to avtp and pavtp only"},
   {"lambda_with_pvtp", E + " --source 0 --algorithm pvtp --lambda 8", "d.txt", "--lambda applies to"},
   {"threads_zero", E + " --source 0 --algorithm pvtp --threads 0", "d.txt", "--threads must be a positive integer"},
+  {"threads_huge", E + " --source 0 --algorithm pvtp --threads 100000", "d.txt", "--threads must be at most 1024"},
   {"threads_negative", E + " --source 0 --algorithm pavtp --threads -2", "d.txt", "got -2"},
   {"threads_not_a_number", E + " --source 0 --algorithm pvtp --threads x", "d.txt", "--threads"},
   {"threads_fraction", E + " --source 0 --algorithm pvtp --threads 1.5", "d.txt", "--threads"},

@@ -20,6 +20,17 @@ public:
   explicit Geodesic_error(const std::string& what) : std::runtime_error(what) {}
 };
 
+/// \ingroup PkgGeodesics3Ref
+/// Thrown when the caller's `callback` (a named parameter of the long-running functions)
+/// returned `false`: the run stopped, and nothing was written to the caller's maps.
+class Geodesic_cancelled : public Geodesic_error
+{
+public:
+  /// builds the exception.
+  /// \param what the message: what was cancelled
+  explicit Geodesic_cancelled(const std::string& what) : Geodesic_error(what) {}
+};
+
 } // namespace CGAL_ext
 
 #endif // CGAL_EXT_GEODESICS_3_GEODESIC_ERROR_H

@@ -10,6 +10,7 @@
 #include <CGAL_ext/Geodesics_3/internal/kernel/VTP_solver.h>
 #include <CGAL_ext/Geodesics_3/internal/mesh/Mesh_setup.h>
 #include <CGAL_ext/Geodesics_3/internal/support/Parallel_for.h>
+#include <CGAL_ext/Geodesics_3/internal/support/Progress_reporter.h>
 #include <CGAL_ext/Geodesics_3/internal/support/Solver_arena.h>
 
 #include <algorithm>
@@ -72,6 +73,7 @@ public:
   template <class NamedParameters>
   Row_solvers(const TriangleMesh& tm, const NamedParameters& np)
     : m_settings(vtp_settings(np))
+    , m_progress(std::exchange(m_settings.callback, {}), "the distance rows")
     , m_mesh(tm, np)
     , m_arena(m_settings.number_of_threads)
   {
@@ -103,6 +105,7 @@ public:
   {
     if(points.empty())
       throw Geodesic_error("no source was given");
+    m_progress.start();
     m_arena.execute([&] {
       const std::size_t threads = parallel ? arena_concurrency() : 1;
       if(m_solvers.size() < threads) {
@@ -113,6 +116,7 @@ public:
       std::size_t rows_made = 0, bytes_made = 0;
       std::vector<Row> rows;
       for(std::size_t first = 0, n = 0; first < points.size(); first += n) {
+        m_progress.report([&] { return double(first) / double(points.size()); });
         n = std::min(batch, points.size() - first);
         if(rows.size() < n)
           rows.resize(n);
@@ -169,7 +173,8 @@ private:
     return settings;
   }
 
-  Solver_settings m_settings;
+  Solver_settings m_settings; // without the callback: the rows' solvers run on any thread
+  Progress_reporter m_progress; // the caller's callback: rows handed over, from the calling thread
   Setup m_mesh;
   Solver_arena<parallel> m_arena;
   std::vector<std::unique_ptr<VTP_solver>> m_solvers; // by thread slot

@@ -77,6 +77,8 @@ public:
     const auto start = Clock::now();
     check_has_sources(m_mesh, m_sources);
     m_main_slot = m_windows.use_one_slot_per_thread(m_parallel);
+    m_vertices_reached = 0;
+    start_progress();
     start_from_sources();
     if(m_parallel)
       run_parallel();
@@ -154,6 +156,8 @@ private:
 
   void set_distance(int v, const Vertex_update& u)
   {
+    if(m_distance[v] == infinity())
+      ++m_vertices_reached;
     m_distance[v] = u.distance;
     m_nearest_source[v] = u.source;
     if(m_emits_when_taken[v])
@@ -276,6 +280,15 @@ private:
     m_emitted_windows.clear();
   }
 
+  // How far the run is, for the caller's callback: the share of the vertices reached, or of the
+  // max distance at the window taken last.
+  double done_fraction(double front) const
+  {
+    const double by_vertices = double(m_vertices_reached) / double(std::max<std::size_t>(1, m_mesh.number_of_vertices));
+    return m_max_distance < infinity() && m_max_distance > 0 ? std::max(by_vertices, front / m_max_distance)
+                                                             : by_vertices;
+  }
+
   void run_with_heap()
   {
     while(!m_heap.empty()) {
@@ -286,6 +299,7 @@ private:
       if(top.first > m_max_distance)
         break;
       take(top.second, std::size_t(-1));
+      report_progress_often([&] { return done_fraction(top.first); });
     }
   }
 
@@ -298,8 +312,10 @@ private:
         return;
       const std::size_t taken = m_buckets.index_of_lowest();
       for(const auto& e : bucket)
-        if(!is_stale(e.first, e.second) && e.first <= m_max_distance)
+        if(!is_stale(e.first, e.second) && e.first <= m_max_distance) {
           take(e.second, taken);
+          report_progress_often([&] { return done_fraction(e.first); });
+        }
     }
   }
 
@@ -342,6 +358,7 @@ private:
       m_statistics.seconds_selection += seconds_since(start);
       if(n == 0 && m_emitted_windows.empty())
         return;
+      report_progress([&] { return done_fraction(0); });
       start = Clock::now();
       propagate_selected(n);
       m_statistics.seconds_propagation += seconds_since(start);
@@ -496,6 +513,7 @@ private:
   std::vector<std::uint8_t> m_emits_when_taken; // pseudo-source or source
   Edge_window_store m_windows;
   std::size_t m_main_slot = 0; // the pool slot of the thread running run()
+  std::size_t m_vertices_reached = 0; // vertices given a distance in this run (for the callback)
   const bool m_use_heap;       // MMP; otherwise buckets
   Min_heap<Queue_item> m_heap;
   Bucket_queue<Queue_item> m_buckets;

@@ -9,10 +9,13 @@
 #include <CGAL_ext/Geodesics_3/internal/kernel/Source_windows.h>
 #include <CGAL_ext/Geodesics_3/internal/kernel/Window.h>
 #include <CGAL_ext/Geodesics_3/internal/mesh/Solver_mesh.h>
+#include <CGAL_ext/Geodesics_3/internal/support/Progress_reporter.h>
 
 #include <algorithm>
 #include <chrono>
+#include <functional>
 #include <limits>
+#include <utility>
 #include <vector>
 
 namespace CGAL_ext {
@@ -44,6 +47,8 @@ public:
   /// In the solver mesh's unit.
   double max_distance() const { return m_max_distance; }
   const Geodesic_statistics& statistics() const { return m_statistics; }
+  /// The caller's callback of the runs from now on (`Solver_settings::callback`); between runs only.
+  void set_callback(std::function<bool(double)> callback) { m_progress = Progress_reporter(std::move(callback)); }
 
 protected:
   typedef std::chrono::steady_clock Clock;
@@ -60,6 +65,7 @@ protected:
     , m_min_window_length(min_window_length_ratio * mesh.mean_edge_length)
     , m_batch_size(settings.batch_size)
     , m_parallel(parallel)
+    , m_progress(settings.callback)
   {
 #ifndef CGAL_LINKED_WITH_TBB
     if(parallel)
@@ -121,6 +127,22 @@ protected:
     m_peak_windows = std::max(m_peak_windows, pool.live());
   }
 
+  /// Starts the reports of a run to the caller's callback.
+  void start_progress() { m_progress.start(); }
+  /// Tells the caller's callback the fraction `done()` of the run, a few times a second, from the
+  /// thread running run(); throws Geodesic_cancelled when the callback says so.
+  template <class DoneFraction>
+  void report_progress(DoneFraction done)
+  {
+    m_progress.report(done);
+  }
+  /// The same for a loop that calls it very often (the clock is read once in 64 calls).
+  template <class DoneFraction>
+  void report_progress_often(DoneFraction done)
+  {
+    m_progress.report_often(done);
+  }
+
   /// Fills the statistics every solver reports at the end of its run.
   template <class Pool>
   void finish_statistics(const Pool& pool, Clock::time_point start)
@@ -147,6 +169,7 @@ protected:
   const bool m_parallel;
   std::size_t m_peak_windows = 0;
   Geodesic_statistics m_statistics;
+  Progress_reporter m_progress;
 };
 
 } // namespace internal

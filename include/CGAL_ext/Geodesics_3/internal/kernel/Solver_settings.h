@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <functional>
 #include <limits>
 #include <sstream>
 #include <string>
@@ -28,6 +29,8 @@ struct Solver_settings
   int number_of_threads = 0; // 0: TBB's choice
   std::size_t batch_size = default_batch_size;
   Geodesic_statistics* statistics = nullptr; // where to report, if anywhere
+  // The caller's `callback`: told the fraction done a few times a second; false cancels.
+  std::function<bool(double)> callback;
 };
 
 /// The checks of a max distance and of an approximation's lambda, wherever one is given.
@@ -93,6 +96,8 @@ Solver_settings read_solver_settings(const NamedParameters& np, Geodesic_algorit
                   "CGAL_ext: this function reports a CGAL_ext::Geodesic_statistics through `statistics`");
     s.statistics = static_cast<Geodesic_statistics*>(get_parameter(np, internal_np::statistics));
   }
+  if constexpr(!is_default_parameter<NamedParameters, CGAL::internal_np::callback_t>::value)
+    s.callback = get_parameter(np, CGAL::internal_np::callback);
   return s;
 }
 

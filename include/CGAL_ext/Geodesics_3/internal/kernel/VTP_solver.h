@@ -333,6 +333,7 @@ public:
       }
     }
     m_next_reset = m_reset_step;
+    start_progress();
     do {
       if(m_batched)
         take_vertices_in_batches();
@@ -382,6 +383,8 @@ private:
       m_task_one.propagated.clear();
     }
     m_stops_taken = 0;
+    m_vertices_taken = 0;
+    m_front = 0;
     m_stop_limit = infinity();
     m_stop_floor = 0;
     m_heap.clear();
@@ -460,6 +463,15 @@ private:
     }
   }
 
+  // How far the run is, for the caller's callback: the share of the vertices taken, or of the
+  // distance limit reached when there is one.
+  double done_fraction() const
+  {
+    const double by_vertices = double(m_vertices_taken) / double(std::max<std::size_t>(1, m_mesh.number_of_vertices));
+    const double l = limit();
+    return l < infinity() && l > 0 ? std::max(by_vertices, m_front / l) : by_vertices;
+  }
+
   // Sequential VTP: the nearest vertex is taken, and everything it schedules is propagated
   // before the next one.
   void take_vertices_one_by_one()
@@ -476,6 +488,7 @@ private:
       reset_wavefront_before(top.first);
       take_vertex(top.second);
       drain();
+      report_progress_often([&] { return done_fraction(); });
     }
   }
 
@@ -518,6 +531,7 @@ private:
       m_statistics.seconds_selection += seconds_since(start);
       if(took_any) {
         drain();
+        report_progress([&] { return done_fraction(); });
         continue;
       }
       if(lowest_waiting == infinity() || lowest_waiting > limit())
@@ -687,8 +701,10 @@ private:
   void take_vertex(int v)
   {
     ++m_statistics.vertices_popped;
+    m_front = m_distance[v];
     if(!m_is_taken[v]) {
       m_is_taken[v] = 1;
+      ++m_vertices_taken;
       if(m_is_stop[v] && ++m_stops_taken == m_stop_vertices.size())
         update_stop_limit();
     }
@@ -1277,6 +1293,8 @@ private:
   std::size_t m_main_slot = 0; // the pool slot of the thread running run()
   std::vector<int> m_stop_vertices;
   std::size_t m_stops_taken = 0;
+  std::size_t m_vertices_taken = 0; // distinct vertices taken in this run (for the callback)
+  double m_front = 0;               // the distance of the last vertex taken (for the callback)
   int m_first_source_index = 0; // the number of the first source (keep_field_for_next_run)
   bool m_started_from_a_field = false;
   std::vector<int> m_reached;        // vertices whose distance this run set, each once

@@ -24,6 +24,7 @@
 #include <CGAL_ext/Geodesics_3/internal/patterns/Pattern_rows.h>
 #include <CGAL_ext/Geodesics_3/internal/patterns/Pattern_samples.h>
 #include <CGAL_ext/Geodesics_3/internal/patterns/Pattern_settings.h>
+#include <CGAL_ext/Geodesics_3/internal/support/Progress_reporter.h>
 #include <CGAL_ext/Geodesics_3/internal/patterns/Pattern_signatures.h>
 #include <CGAL_ext/geodesic_voronoi_diagram.h>
 
@@ -130,17 +131,18 @@ private:
 
   enum class Step { sampling, signatures, growing, centres, arrangement };
 
-  // Tells the caller's callback how far the run is: `within` of `step` done.
+  // Tells the caller's callback how far the run is: `within` of `step` done (a few times a
+  // second at most, and at the end of the run).
   void report(Step step, double within)
   {
     // where each step starts and ends, as a fraction of a run (the shares of a golf ball's)
     static constexpr double bounds[] = {0.0, 0.35, 0.65, 0.8, 0.87, 1.0};
-    if(!m_settings.progress)
-      return;
     const double a = bounds[int(step)], b = bounds[int(step) + 1];
-    m_reported = std::max(m_reported, a + (b - a) * std::clamp(within, 0.0, 1.0));
-    if(!m_settings.progress(m_reported))
-      throw Geodesic_error("pattern detection: interrupted by the callback");
+    const double done = a + (b - a) * std::clamp(within, 0.0, 1.0);
+    if(done >= 1.)
+      m_progress.report_now(done);
+    else
+      m_progress.report([done] { return done; });
   }
 
   static double seconds_since(Clock::time_point start)
@@ -680,7 +682,7 @@ private:
   Pattern_patch_geometry<parallel, TriangleMesh, VertexPointMap, VertexIndexMap> m_patch;
   Pattern_samples<parallel, TriangleMesh, VertexPointMap, VertexIndexMap> m_samples;
   Pattern_statistics* m_times = nullptr;
-  double m_reported = 0;
+  Progress_reporter m_progress{m_settings.progress, "pattern detection"};
 
   std::vector<bool> m_used; // samples that are images of an accepted instance (or of the patch)
   std::vector<Instance> m_instances;
