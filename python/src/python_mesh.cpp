@@ -1,0 +1,427 @@
+// Copyright (c) 2026 The CGAL_ext geodesics developers.
+// The Python `Mesh`: made of NumPy arrays or read from a file, prepared once, and its distances
+// and distance matrices.
+
+#include "python_support.h"
+
+#include "tool_error.h"
+#include "tool_matrix.h"
+#include "tool_solvers.h"
+
+#include <CGAL_ext/Geodesics_3/internal/kernel/VTP_solver.h>
+#include <CGAL_ext/Geodesics_3/internal/mesh/Mesh_setup.h>
+#include <CGAL_ext/Geodesics_3/internal/support/Progress_reporter.h>
+#include <CGAL_ext/Geodesics_3/internal/support/Solver_arena.h>
+
+#include <algorithm>
+#include <limits>
+#include <mutex>
+
+namespace cgal_ext_python {
+
+using geodesic_tool::Mesh;
+using geodesic_tool::Solver_choice;
+using geodesic_tool::Tool_error;
+using geodesic_tool::Vertex_index;
+namespace internal = CGAL_ext::Geodesics_3::internal;
+
+/// The solver mesh of a `Python_mesh`, built at its first VTP solve, and the VTP solvers of
+/// past solves, kept for the next ones: a solve on a prepared mesh costs what it sweeps. Solves
+/// may run at once from several Python threads: each takes a solver of its own.
+class Prepared_solvers
+{
+public:
+  typedef boost::property_map<Mesh, CGAL::vertex_point_t>::const_type Vertex_point_map;
+  typedef internal::Mesh_setup<Mesh, Vertex_point_map> Setup;
+
+  explicit Prepared_solvers(const Mesh_file& file)
+    : m_setup(file.mesh, CGAL_ext::parameters::glued_vertices(file.glued_vertices))
+  {
+    m_index_of_point.reserve(file.vertex_of_point.size());
+    for(Vertex_index v : file.vertex_of_point)
+      m_index_of_point.push_back(m_setup.index(v));
+  }
+
+  /// One VTP run (the family `choice` names) from `sources` until `stops` are settled (point
+  /// ids); writes the distance of every point and, unless null, its nearest source.
+  void solve(const Mesh_file& file, const std::vector<Surface_point>& sources, const std::vector<std::size_t>& stops,
+             const Solver_choice& choice, double* distance, long long* nearest)
+  {
+    geodesic_tool::check_a_source_is_on_a_face(file, sources);
+    std::unique_ptr<Kept_solver> kept = take(choice);
+    internal::VTP_solver& solver = kept->solver;
+    solver.reset();
+    solver.set_max_distance_in_mesh_unit(choice.max_distance);
+    solver.set_callback(choice.callback);
+    for(const Surface_point& s : sources)
+      solver.add_source(s.vertex ? m_setup.source_point(geodesic_tool::mesh_vertex(file, s))
+                                 : m_setup.source_point(geodesic_tool::library_location(file, s, "source")));
+    for(std::size_t p : stops)
+      solver.add_stop_vertex(m_index_of_point[p]);
+    // A run that throws (a cancellation) leaves windows behind: its solver is dropped, not kept.
+    if(choice.algorithm->parallel)
+      internal::run_solver<true>(solver, choice.threads);
+    else
+      internal::run_solver<false>(solver, 1);
+    const std::vector<double>& d = solver.distances();
+    const std::vector<int>& source = solver.nearest_sources();
+    const double unit = m_setup.cache().unit;
+    for(std::size_t p = 0; p < m_index_of_point.size(); ++p) {
+      const std::size_t v = std::size_t(m_index_of_point[p]);
+      distance[p] = d[v] * unit;
+      if(nearest)
+        nearest[p] = source[v];
+    }
+    give_back(std::move(kept));
+  }
+
+private:
+  struct Kept_solver
+  {
+    Kept_solver(const internal::Solver_mesh& mesh, const internal::Solver_settings& settings, bool parallel)
+      : parallel(parallel), lambda(settings.approximation), solver(mesh, settings, parallel)
+    {
+    }
+    bool parallel;
+    double lambda;
+    internal::VTP_solver solver;
+  };
+
+  std::unique_ptr<Kept_solver> take(const Solver_choice& choice)
+  {
+    const bool parallel = choice.algorithm->parallel;
+    const double lambda = choice.algorithm->approximate ? choice.lambda : 0.;
+    {
+      const std::lock_guard<std::mutex> lock(m_mutex);
+      for(auto it = m_idle.begin(); it != m_idle.end(); ++it)
+        if((*it)->parallel == parallel && (*it)->lambda == lambda) {
+          std::unique_ptr<Kept_solver> kept = std::move(*it);
+          m_idle.erase(it);
+          return kept;
+        }
+    }
+    internal::Solver_settings settings;
+    settings.approximation = lambda;
+    settings.batch_size = choice.batch_size;
+    return std::make_unique<Kept_solver>(m_setup.cache(), settings, parallel);
+  }
+
+  void give_back(std::unique_ptr<Kept_solver> kept)
+  {
+    kept->solver.set_callback({}); // the caller's Python function is not kept alive here
+    const std::lock_guard<std::mutex> lock(m_mutex);
+    m_idle.push_back(std::move(kept));
+    // a few of each kind are enough for the threads of a Python program
+    if(m_idle.size() > max_idle_solvers)
+      m_idle.erase(m_idle.begin());
+  }
+
+  static constexpr std::size_t max_idle_solvers = 4;
+  Setup m_setup;
+  std::vector<int> m_index_of_point; // the solver mesh's vertex of each point
+  std::mutex m_mutex;
+  std::vector<std::unique_ptr<Kept_solver>> m_idle;
+};
+
+Python_mesh::Python_mesh(Mesh_file f) : file(std::move(f)) {}
+Python_mesh::~Python_mesh() = default;
+
+Prepared_solvers& Python_mesh::prepared_solvers()
+{
+  std::call_once(m_prepare_once, [this] { prepared = std::make_unique<Prepared_solvers>(file); });
+  return *prepared;
+}
+
+namespace {
+
+typedef std::shared_ptr<Python_mesh> Mesh_ptr;
+
+/// The points of an (n, 3) array.
+std::vector<geodesic_tool::Point> read_vertices(py::handle vertices)
+{
+  const auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(vertices);
+  if(!a)
+    throw Tool_error("vertices: expected an (n, 3) array of numbers");
+  if(a.ndim() != 2 || a.shape(1) != 3)
+    throw Tool_error("vertices: expected an array of shape (n, 3), got one of " + std::to_string(a.ndim()) +
+                     " dimensions" + (a.ndim() == 2 ? " and shape (" + std::to_string(a.shape(0)) + ", " +
+                                                        std::to_string(a.shape(1)) + ")"
+                                                  : std::string()));
+  std::vector<geodesic_tool::Point> points;
+  points.reserve(std::size_t(a.shape(0)));
+  const double* xyz = a.data();
+  for(py::ssize_t i = 0; i < a.shape(0); ++i, xyz += 3)
+    points.emplace_back(xyz[0], xyz[1], xyz[2]);
+  return points;
+}
+
+/// The polygons of an (m, k) integer array, or of a sequence of sequences of ids.
+geodesic_tool::Polygons read_faces(py::handle faces, std::size_t number_of_points)
+{
+  const auto check = [&](long long id, std::size_t f) {
+    if(id < 0 || std::size_t(id) >= number_of_points)
+      throw Tool_error("faces: face " + std::to_string(f) + " has vertex id " + std::to_string(id) +
+                       ", out of range (there are " + std::to_string(number_of_points) + " vertices)");
+  };
+  geodesic_tool::Polygons polygons;
+  std::vector<long long> polygon;
+  if(py::isinstance<py::array>(faces)) {
+    const py::array a = py::reinterpret_borrow<py::array>(faces);
+    if(a.dtype().kind() != 'i' && a.dtype().kind() != 'u')
+      throw Tool_error(std::string("faces: expected an array of an integer dtype, got dtype ") +
+                       std::string(py::str(a.dtype())));
+    if(a.ndim() != 2 || a.shape(1) < 3)
+      throw Tool_error("faces: expected an array of shape (m, 3) (or (m, k), k >= 3, of polygons)");
+    const auto ids = py::array_t<long long, py::array::c_style | py::array::forcecast>::ensure(a);
+    const std::size_t k = std::size_t(ids.shape(1));
+    const long long* id = ids.data();
+    for(std::size_t f = 0; f < std::size_t(ids.shape(0)); ++f, id += k) {
+      for(std::size_t j = 0; j < k; ++j)
+        check(id[j], f);
+      polygons.push_back(std::vector<long long>(id, id + k));
+    }
+    return polygons;
+  }
+  if(!py::isinstance<py::sequence>(faces) || py::isinstance<py::str>(faces))
+    throw Tool_error("faces: expected an (m, 3) integer array or a sequence of polygons (sequences of vertex ids)");
+  std::size_t f = 0;
+  for(py::handle item : py::reinterpret_borrow<py::sequence>(faces)) {
+    polygon.clear();
+    if(!py::isinstance<py::sequence>(item) && !py::isinstance<py::array>(item))
+      throw Tool_error("faces: face " + std::to_string(f) + " is not a sequence of vertex ids");
+    for(py::handle id : item) {
+      if(!PyIndex_Check(id.ptr()) || PyBool_Check(id.ptr()))
+        throw Tool_error("faces: face " + std::to_string(f) + " has a vertex id that is not an integer: " +
+                         std::string(py::str(id)));
+      polygon.push_back(id.cast<long long>());
+      check(polygon.back(), f);
+    }
+    polygons.push_back(polygon);
+    ++f;
+  }
+  return polygons;
+}
+
+Mesh_ptr make_mesh(py::handle vertices, py::handle faces)
+{
+  geodesic_tool::Soup soup;
+  soup.points = read_vertices(vertices);
+  soup.polygons = read_faces(faces, soup.points.size());
+  py::gil_scoped_release release;
+  return std::make_shared<Python_mesh>(geodesic_tool::make_mesh_file(std::move(soup)));
+}
+
+py::dict repairs_dict(const CGAL_ext::Geodesic_mesh_repairs& r)
+{
+  py::dict d;
+  d["merged_points"] = r.merged_points;
+  d["removed_polygons"] = r.removed_polygons;
+  d["split_polygons"] = r.split_polygons;
+  d["triangulated_polygons"] = r.triangulated_polygons;
+  d["reversed_polygons"] = r.reversed_polygons;
+  d["duplicated_points"] = r.duplicated_points;
+  d["non_manifold_edges"] = r.non_manifold_edges;
+  d["isolated_points"] = r.isolated_points;
+  d["changed"] = r.changed();
+  d["summary"] = r.summary();
+  return d;
+}
+
+py::object distances(const Mesh_ptr& mesh, py::handle sources, const std::string& algorithm,
+                     std::optional<int> threads, std::optional<double> max_distance, py::handle stop_vertices,
+                     std::optional<double> lam, bool return_sources, py::object progress)
+{
+  Solver_choice choice = solver_choice(algorithm, threads, lam, max_distance, false);
+  const std::vector<Surface_point> points = read_points(*mesh, sources, "source");
+  if(points.empty())
+    throw Tool_error("no source was given");
+  std::vector<std::size_t> stops;
+  if(!stop_vertices.is_none()) {
+    stops = read_vertex_ids(*mesh, stop_vertices, "stop vertex");
+    if(choice.algorithm->library != CGAL_ext::VTP)
+      throw Tool_error("stop_vertices works with algorithm 'vtp' only");
+  }
+  const std::size_t n = mesh->number_of_points();
+  py::array_t<double> distance{py::ssize_t(n)};
+  py::array_t<long long> nearest{return_sources ? py::ssize_t(n) : py::ssize_t(0)};
+  double* d = distance.mutable_data();
+  long long* label = return_sources ? nearest.mutable_data() : nullptr;
+  Python_callback callback(std::move(progress));
+  choice.callback = callback.function();
+  without_gil(callback, [&] {
+    if(choice.algorithm->library == CGAL_ext::VTP) {
+      mesh->prepared_solvers().solve(mesh->file, points, stops, choice, d, label);
+      return;
+    }
+    CGAL_ext::Geodesic_statistics stats;
+    std::vector<long> labels;
+    const std::vector<double> by_point =
+      geodesic_tool::compute_distances(mesh->file, points, choice, stats, return_sources ? &labels : nullptr);
+    std::copy(by_point.begin(), by_point.end(), d);
+    if(label)
+      std::copy(labels.begin(), labels.end(), label);
+  });
+  if(return_sources)
+    return py::make_tuple(distance, nearest);
+  return std::move(distance);
+}
+
+/// The dense matrix, (sources, targets), or its CSR arrays (data, indices, indptr, shape) with a
+/// finite max distance.
+py::object distance_matrix(const Mesh_ptr& mesh, py::handle sources, py::handle targets,
+                           std::optional<double> max_distance, std::optional<int> threads, py::object progress)
+{
+  const Solver_choice choice = solver_choice("vtp", threads, std::nullopt, max_distance, false);
+  const std::vector<Surface_point> points = read_points(*mesh, sources, "source");
+  if(points.empty())
+    throw Tool_error("no source was given");
+  std::vector<std::size_t> columns;
+  if(targets.is_none()) {
+    columns.resize(mesh->number_of_points());
+    std::iota(columns.begin(), columns.end(), std::size_t(0));
+  } else {
+    columns = read_vertex_ids(*mesh, targets, "target");
+  }
+  const int thread_count = threads ? *threads : 0;
+  const std::size_t rows = points.size(), width = columns.size();
+  Python_callback callback(std::move(progress));
+  internal::Progress_reporter reporter(callback.function(), "the distance matrix");
+  const auto report = [&](std::size_t i) { reporter.report([&] { return double(i + 1) / double(rows); }); };
+
+  if(!(choice.max_distance < std::numeric_limits<double>::infinity())) {
+    py::array_t<double> matrix({py::ssize_t(rows), py::ssize_t(width)});
+    double* out = matrix.mutable_data();
+    without_gil(callback, [&] {
+      geodesic_tool::compute_distance_rows(mesh->file, points, choice.max_distance, thread_count,
+                                           [&](std::size_t i, const std::vector<double>& row) {
+                                             double* r = out + i * width;
+                                             for(std::size_t j = 0; j < width; ++j)
+                                               r[j] = row[columns[j]];
+                                             report(i);
+                                           });
+    });
+    return std::move(matrix);
+  }
+
+  std::vector<double> data;
+  std::vector<long long> indices, indptr{0};
+  without_gil(callback, [&] {
+    const geodesic_tool::Columns_of_vertices columns_of(mesh->file, columns);
+    std::vector<std::pair<long long, double>> entries;
+    geodesic_tool::compute_sparse_distance_rows(
+      mesh->file, points, choice.max_distance, thread_count,
+      [&](std::size_t i, const std::vector<std::pair<std::size_t, double>>& row) {
+        entries.clear();
+        for(const auto& [v, d] : row)
+          for(std::size_t j : columns_of.vertex(v))
+            entries.emplace_back(static_cast<long long>(j), d);
+        std::sort(entries.begin(), entries.end());
+        for(const auto& [j, d] : entries) {
+          indices.push_back(j);
+          data.push_back(d);
+        }
+        indptr.push_back(static_cast<long long>(indices.size()));
+        report(i);
+      });
+  });
+  return py::make_tuple(to_array(std::move(data)), to_array(std::move(indices)), to_array(std::move(indptr)),
+                        py::make_tuple(rows, width));
+}
+
+} // namespace
+
+void bind_mesh(py::module_& m)
+{
+  py::class_<Python_mesh, Mesh_ptr>(m, "Mesh", R"doc(
+A triangle mesh, prepared once for any number of geodesic computations.
+
+Made of a vertex array (n, 3) and faces, either an (m, 3) integer array of
+triangles or a sequence of polygons (sequences of vertex ids). Polygon soups
+are repaired as needed (duplicate points merged, polygons triangulated, the
+surface oriented, non-manifold vertices and edges split and glued again) and
+``repairs`` says what was done. Every id given to or returned by a method is a
+vertex or a face of the input, whatever the repair did.
+
+The first VTP solve builds the solver mesh; later solves reuse it and the
+solvers of earlier solves, so that a solve costs what it sweeps.
+)doc")
+    .def(py::init(&make_mesh), py::arg("vertices"), py::arg("faces"))
+    .def_static(
+      "read",
+      [](py::object path) {
+        const std::string name = py::str(py::module_::import("os").attr("fspath")(path));
+        py::gil_scoped_release release;
+        return std::make_shared<Python_mesh>(geodesic_tool::read_mesh_file(name));
+      },
+      py::arg("path"), "Reads a mesh file (.off, .obj, .ply or .stl, ASCII or binary) and prepares it.")
+    .def_property_readonly(
+      "vertices",
+      [](py::object self) {
+        const Python_mesh& mesh = self.cast<const Python_mesh&>();
+        static_assert(sizeof(geodesic_tool::Point) == 3 * sizeof(double), "a point is 3 doubles");
+        py::array_t<double> view({py::ssize_t(mesh.number_of_points()), py::ssize_t(3)},
+                                 {py::ssize_t(sizeof(geodesic_tool::Point)), py::ssize_t(sizeof(double))},
+                                 reinterpret_cast<const double*>(mesh.file.soup.points.data()), self);
+        view.attr("setflags")(py::arg("write") = false);
+        return view;
+      },
+      "The input vertices, (n, 3) float64, a read-only view.")
+    .def_property_readonly(
+      "faces",
+      [](const Python_mesh& mesh) -> py::object {
+        const geodesic_tool::Polygons& polygons = mesh.file.soup.polygons;
+        const bool triangles = std::all_of(polygons.begin(), polygons.end(),
+                                           [](const geodesic_tool::Polygons::Polygon& p) { return p.size() == 3; });
+        if(triangles) {
+          std::vector<long long> ids;
+          ids.reserve(3 * polygons.size());
+          for(const auto& polygon : polygons)
+            ids.insert(ids.end(), polygon.begin(), polygon.end());
+          return to_array(std::move(ids), {py::ssize_t(polygons.size()), 3});
+        }
+        py::list list;
+        for(const auto& polygon : polygons)
+          list.append(to_array(std::vector<long long>(polygon.begin(), polygon.end())));
+        return std::move(list);
+      },
+      "The input faces: an (m, 3) int64 array when all are triangles, a list of arrays otherwise.")
+    .def_property_readonly("n_vertices", &Python_mesh::number_of_points, "The number of input vertices.")
+    .def_property_readonly("n_faces", &Python_mesh::number_of_polygons, "The number of input faces.")
+    .def_property_readonly(
+      "repairs", [](const Python_mesh& mesh) { return repairs_dict(mesh.file.repairs); },
+      "What was repaired to make a triangle mesh of the input: counts by kind, 'changed' and a one-line 'summary'.")
+    .def("__repr__",
+         [](const Python_mesh& mesh) {
+           return "<cgal_ext_geodesics.Mesh with " + std::to_string(mesh.number_of_points()) + " vertices and " +
+                  std::to_string(mesh.number_of_polygons()) + " faces>";
+         })
+    .def("distances", &distances, py::arg("sources"), py::arg("algorithm") = "vtp", py::arg("threads") = py::none(),
+         py::arg("max_distance") = py::none(), py::arg("stop_vertices") = py::none(), py::arg("lam") = py::none(),
+         py::arg("return_sources") = false, py::arg("progress") = py::none(), R"doc(
+Geodesic distances from the nearest source to every vertex.
+
+sources: a vertex id, a sequence of vertex ids, a face point
+    ``(face, (b0, b1, b2))`` (barycentric coordinates in the order of the
+    face's vertices), a sequence of face points, or two arrays
+    ``(faces, barycentric)`` of shapes (k,) and (k, 3).
+algorithm: 'vtp' (the default), 'fwp_mmp' or 'mmp'; all exact.
+threads: None for every core, 1 for one thread; the distances are the same
+    for every number of threads. (MMP runs on one thread.)
+max_distance: stop the propagation there; farther vertices get inf.
+stop_vertices: stop once these vertices are settled ('vtp' only).
+lam: approximate the distances from above (AVTP), the faster the smaller.
+return_sources: also return the index of each vertex's nearest source (in
+    the order of `sources`; -1 where no source reaches).
+progress: a function called a few times a second with the fraction done;
+    returning False cancels (``Cancelled``). Ctrl-C interrupts in any case.
+
+Returns an (n,) float64 array (inf where unreached), or a tuple
+(distances, nearest_sources) with an int64 array.
+)doc")
+    .def("_distance_matrix", &distance_matrix, py::arg("sources"), py::arg("targets") = py::none(),
+         py::arg("max_distance") = py::none(), py::arg("threads") = py::none(), py::arg("progress") = py::none(),
+         "The dense matrix, or the CSR arrays (data, indices, indptr, shape) with a finite max_distance; "
+         "Mesh.distance_matrix makes a SciPy matrix of them.");
+}
+
+} // namespace cgal_ext_python
