@@ -36,10 +36,10 @@ def tool_solve(tool, mesh):
 def python_solves(mesh_path):
     mesh = geo.read_mesh(mesh_path)
     t = time.perf_counter()
-    first = mesh.distances(0, threads=1)
+    first = mesh.distances(0, algorithm="vtp")
     first_seconds = time.perf_counter() - t
     t = time.perf_counter()
-    second = mesh.distances(0, threads=1)
+    second = mesh.distances(0, algorithm="vtp")
     second_seconds = time.perf_counter() - t
     assert np.array_equal(first, second)
     return first_seconds, second_seconds
@@ -70,7 +70,7 @@ def python_rows(mesh_path, rows, radius_edges):
     fresh = geo.read_mesh(mesh_path)
     t = time.perf_counter()
     for s in sources:
-        d = fresh.distances(s, max_distance=radius, threads=1)
+        d = fresh.distances(s, algorithm="vtp", max_distance=radius)
     per_call = (time.perf_counter() - t) / rows
     reached = np.isfinite(d).sum()
     return one_call, per_call, matrix.nnz / rows, reached

@@ -216,7 +216,19 @@ Surface_point parse_surface_point(const std::string& text, const char* role)
   for(int k = 0; k < 3; ++k)
     if(!parse_number(fields[k + 1], s.barycentric[k]) || !std::isfinite(s.barycentric[k]))
       throw bad("barycentric coordinate '" + fields[k + 1] + "' is not a number");
+  check_barycentric(s, role);
+  return s;
+}
+
+void check_barycentric(const Surface_point& s, const char* role)
+{
+  const auto bad = [&](const std::string& why) {
+    return Tool_error(std::string(role) + " '" + s.text + "': " + why);
+  };
   const auto& b = s.barycentric;
+  for(int k = 0; k < 3; ++k)
+    if(!std::isfinite(b[k]))
+      throw bad("barycentric coordinates must be finite numbers");
   if(b[0] < 0 || b[1] < 0 || b[2] < 0)
     throw bad("barycentric coordinates must be non-negative");
   const double sum = b[0] + b[1] + b[2];
@@ -227,7 +239,6 @@ Surface_point parse_surface_point(const std::string& text, const char* role)
     msg << "barycentric coordinates sum to " << sum << ", not 1";
     throw bad(msg.str());
   }
-  return s;
 }
 
 std::vector<Surface_point> parse_sources(const std::vector<std::string>& texts)

@@ -137,6 +137,9 @@ struct Surface_point
 
 /// `role` ("source" or "target") names the point in error messages.
 Surface_point parse_surface_point(const std::string& text, const char* role = "source");
+/// Throws Tool_error, naming the point as written, unless its barycentric coordinates are
+/// finite, non-negative and sum to 1 (within the library's tolerance).
+void check_barycentric(const Surface_point& point, const char* role);
 
 std::vector<Surface_point> parse_sources(const std::vector<std::string>& texts);
 

@@ -144,10 +144,12 @@ def _distance_matrix(self, sources, targets=None, max_distance=None, threads=Non
     return scipy.sparse.csr_matrix((data, indices, indptr), shape=shape)
 
 
-def _mesh_voronoi(self, sources, algorithm="vtp", threads=None, progress=None):
+def _mesh_voronoi(self, sources, algorithm=None, threads=None, progress=None):
     """The geodesic Voronoi diagram of the sources (vertex ids or face points), exact.
 
-    algorithm: 'vtp' (the default), 'fwp_mmp' or 'mmp'. Returns a :class:`VoronoiDiagram`.
+    algorithm: 'pvtp' (the default), 'vtp', 'pmmp', 'fwp_mmp' or 'mmp', as for `distances`;
+    threads: None for every core (the parallel algorithms give the same diagram for every
+    number). Returns a :class:`VoronoiDiagram`.
     """
     return VoronoiDiagram(**_voronoi(self, sources, algorithm, threads, progress))
 

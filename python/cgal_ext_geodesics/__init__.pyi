@@ -8,7 +8,8 @@ from typing import Any, Callable, List, Literal, Optional, Sequence, Tuple, Unio
 import numpy as np
 import numpy.typing as npt
 
-Algorithm = Literal["vtp", "fwp_mmp", "fwp-mmp", "mmp"]
+ExactAlgorithm = Literal["pvtp", "vtp", "pmmp", "fwp_mmp", "fwp-mmp", "mmp"]
+Algorithm = Union[ExactAlgorithm, Literal["pavtp", "avtp"]]
 FacePoint = Tuple[int, Tuple[float, float, float]]
 Point = Union[int, np.integer, FacePoint]
 Sources = Union[Point, Sequence[Point], npt.NDArray[np.integer], Tuple[npt.ArrayLike, npt.ArrayLike]]
@@ -34,18 +35,18 @@ class Mesh:
     @property
     def repairs(self) -> dict: ...
     @overload
-    def distances(self, sources: Sources, algorithm: Algorithm = ..., threads: Optional[int] = ...,
+    def distances(self, sources: Sources, algorithm: Optional[Algorithm] = ..., threads: Optional[int] = ...,
                   max_distance: Optional[float] = ..., stop_vertices: Optional[Sources] = ...,
                   lam: Optional[float] = ..., return_sources: Literal[False] = ...,
                   progress: Progress = ...) -> npt.NDArray[np.float64]: ...
     @overload
-    def distances(self, sources: Sources, algorithm: Algorithm = ..., threads: Optional[int] = ...,
+    def distances(self, sources: Sources, algorithm: Optional[Algorithm] = ..., threads: Optional[int] = ...,
                   max_distance: Optional[float] = ..., stop_vertices: Optional[Sources] = ...,
                   lam: Optional[float] = ..., *, return_sources: Literal[True],
                   progress: Progress = ...) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.int64]]: ...
     def distance_matrix(self, sources: Sources, targets: Optional[Sources] = ..., max_distance: Optional[float] = ...,
                         threads: Optional[int] = ..., progress: Progress = ...) -> Any: ...
-    def voronoi(self, sources: Sources, algorithm: Algorithm = ..., threads: Optional[int] = ...,
+    def voronoi(self, sources: Sources, algorithm: Optional[ExactAlgorithm] = ..., threads: Optional[int] = ...,
                 progress: Progress = ...) -> VoronoiDiagram: ...
     def farthest_point_sampling(self, count: Optional[int] = ..., radius: Optional[float] = ..., first: Optional[Sources] = ...,
                                 threads: Optional[int] = ..., lam: Optional[float] = ...,
@@ -57,7 +58,7 @@ class Mesh:
                         threads: Optional[int] = ..., progress: Progress = ...) -> PatternInstances: ...
 
 class GeodesicPaths:
-    def __init__(self, mesh: Mesh, sources: Sources, algorithm: Algorithm = ..., threads: Optional[int] = ...,
+    def __init__(self, mesh: Mesh, sources: Sources, algorithm: Optional[ExactAlgorithm] = ..., threads: Optional[int] = ...,
                  max_distance: Optional[float] = ..., progress: Progress = ...) -> None: ...
     @property
     def n_sources(self) -> int: ...

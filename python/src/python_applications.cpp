@@ -42,7 +42,8 @@ py::array_t<long long> int64_array(const std::vector<T>& values)
   return to_array(std::vector<long long>(values.begin(), values.end()));
 }
 
-py::dict voronoi(const Mesh_ptr& mesh, py::handle sources, const std::string& algorithm, std::optional<int> threads,
+py::dict voronoi(const Mesh_ptr& mesh, py::handle sources, const std::optional<std::string>& algorithm,
+                 std::optional<int> threads,
                  py::object progress)
 {
   geodesic_tool::Solver_choice choice = solver_choice(algorithm, threads, std::nullopt, std::nullopt, true);
@@ -78,7 +79,7 @@ py::dict farthest_point_sampling(const Mesh_ptr& mesh, std::size_t count, std::o
                                  py::handle first, std::optional<int> threads, std::optional<double> lam,
                                  py::object progress)
 {
-  geodesic_tool::Solver_choice choice = solver_choice("vtp", threads, lam, std::nullopt, false);
+  geodesic_tool::Solver_choice choice = vtp_family_choice(threads, lam, std::nullopt);
   geodesic_tool::Sampling_request request;
   request.count = count;
   if(radius) {
@@ -166,7 +167,7 @@ py::dict detect_patterns(const Mesh_ptr& mesh, py::handle center, std::optional<
 
 void bind_applications(py::module_& m)
 {
-  m.def("_voronoi", &voronoi, py::arg("mesh"), py::arg("sources"), py::arg("algorithm") = "vtp",
+  m.def("_voronoi", &voronoi, py::arg("mesh"), py::arg("sources"), py::arg("algorithm") = py::none(),
         py::arg("threads") = py::none(), py::arg("progress") = py::none(),
         "The geodesic Voronoi diagram as a dict of arrays; see cgal_ext_geodesics.Mesh.voronoi.");
   m.def("_farthest_point_sampling", &farthest_point_sampling, py::arg("mesh"), py::arg("count"),

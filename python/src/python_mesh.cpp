@@ -8,6 +8,7 @@
 #include "tool_matrix.h"
 #include "tool_solvers.h"
 
+#include <CGAL_ext/Geodesics_3/internal/kernel/MMP_solver.h>
 #include <CGAL_ext/Geodesics_3/internal/kernel/VTP_solver.h>
 #include <CGAL_ext/Geodesics_3/internal/mesh/Mesh_setup.h>
 #include <CGAL_ext/Geodesics_3/internal/support/Progress_reporter.h>
@@ -25,7 +26,7 @@ using geodesic_tool::Tool_error;
 using geodesic_tool::Vertex_index;
 namespace internal = CGAL_ext::Geodesics_3::internal;
 
-/// The solver mesh of a `Python_mesh`, built at its first VTP solve, and the VTP solvers of
+/// The solver mesh of a `Python_mesh`, built at its first solve, and the VTP solvers of
 /// past solves, kept for the next ones: a solve on a prepared mesh costs what it sweeps. Solves
 /// may run at once from several Python threads: each takes a solver of its own.
 class Prepared_solvers
@@ -42,27 +43,55 @@ public:
       m_index_of_point.push_back(m_setup.index(v));
   }
 
-  /// One VTP run (the family `choice` names) from `sources` until `stops` are settled (point
-  /// ids); writes the distance of every point and, unless null, its nearest source.
+  /// One run of the solver `choice` names from `sources` until `stops` are settled (point ids;
+  /// the VTP family only); writes the distance of every point and, unless null, its nearest
+  /// source. The VTP family's solvers are kept for the next runs; the MMP family's hold their
+  /// windows and are made for each run, on the same solver mesh.
   void solve(const Mesh_file& file, const std::vector<Surface_point>& sources, const std::vector<std::size_t>& stops,
              const Solver_choice& choice, double* distance, long long* nearest)
   {
     geodesic_tool::check_a_source_is_on_a_face(file, sources);
+    const bool parallel = choice.algorithm->parallel;
+    const auto add_sources = [&](internal::Solver_base& solver) {
+      for(const Surface_point& s : sources)
+        solver.add_source(s.vertex ? m_setup.source_point(geodesic_tool::mesh_vertex(file, s))
+                                   : m_setup.source_point(geodesic_tool::library_location(file, s, "source")));
+    };
+    const auto run = [&](auto& solver) {
+      if(parallel)
+        internal::run_solver<true>(solver, choice.threads);
+      else
+        internal::run_solver<false>(solver, 1);
+      write(solver, distance, nearest);
+    };
+    if(geodesic_tool::is_mmp_family(*choice.algorithm)) {
+      internal::Solver_settings settings;
+      settings.algorithm = choice.algorithm->library;
+      settings.batch_size = choice.batch_size;
+      settings.max_distance = choice.max_distance;
+      settings.callback = choice.callback;
+      internal::MMP_solver solver(m_setup.cache(), settings, parallel);
+      add_sources(solver);
+      run(solver);
+      return;
+    }
     std::unique_ptr<Kept_solver> kept = take(choice);
     internal::VTP_solver& solver = kept->solver;
     solver.reset();
     solver.set_max_distance_in_mesh_unit(choice.max_distance);
     solver.set_callback(choice.callback);
-    for(const Surface_point& s : sources)
-      solver.add_source(s.vertex ? m_setup.source_point(geodesic_tool::mesh_vertex(file, s))
-                                 : m_setup.source_point(geodesic_tool::library_location(file, s, "source")));
+    add_sources(solver);
     for(std::size_t p : stops)
       solver.add_stop_vertex(m_index_of_point[p]);
     // A run that throws (a cancellation) leaves windows behind: its solver is dropped, not kept.
-    if(choice.algorithm->parallel)
-      internal::run_solver<true>(solver, choice.threads);
-    else
-      internal::run_solver<false>(solver, 1);
+    run(solver);
+    give_back(std::move(kept));
+  }
+
+private:
+  /// The distance and nearest source of every point, from the solver's arrays.
+  void write(const internal::Solver_base& solver, double* distance, long long* nearest) const
+  {
     const std::vector<double>& d = solver.distances();
     const std::vector<int>& source = solver.nearest_sources();
     const double unit = m_setup.cache().unit;
@@ -72,10 +101,8 @@ public:
       if(nearest)
         nearest[p] = source[v];
     }
-    give_back(std::move(kept));
   }
 
-private:
   struct Kept_solver
   {
     Kept_solver(const internal::Solver_mesh& mesh, const internal::Solver_settings& settings, bool parallel)
@@ -227,10 +254,12 @@ py::dict repairs_dict(const CGAL_ext::Geodesic_mesh_repairs& r)
   return d;
 }
 
-py::object distances(const Mesh_ptr& mesh, py::handle sources, const std::string& algorithm,
+py::object distances(const Mesh_ptr& mesh, py::handle sources, std::optional<std::string> algorithm,
                      std::optional<int> threads, std::optional<double> max_distance, py::handle stop_vertices,
                      std::optional<double> lam, bool return_sources, py::object progress)
 {
+  if(!algorithm && lam) // lam alone asks for the approximation
+    algorithm = geodesic_tool::parallel_available ? "pavtp" : "avtp";
   Solver_choice choice = solver_choice(algorithm, threads, lam, max_distance, false);
   const std::vector<Surface_point> points = read_points(*mesh, sources, "source");
   if(points.empty())
@@ -239,7 +268,7 @@ py::object distances(const Mesh_ptr& mesh, py::handle sources, const std::string
   if(!stop_vertices.is_none()) {
     stops = read_vertex_ids(*mesh, stop_vertices, "stop vertex");
     if(choice.algorithm->library != CGAL_ext::VTP)
-      throw Tool_error("stop_vertices works with algorithm 'vtp' only");
+      throw Tool_error("stop_vertices works with the VTP family only ('pvtp', 'vtp', 'pavtp', 'avtp')");
   }
   const std::size_t n = mesh->number_of_points();
   py::array_t<double> distance{py::ssize_t(n)};
@@ -248,19 +277,7 @@ py::object distances(const Mesh_ptr& mesh, py::handle sources, const std::string
   long long* label = return_sources ? nearest.mutable_data() : nullptr;
   Python_callback callback(std::move(progress));
   choice.callback = callback.function();
-  without_gil(callback, [&] {
-    if(choice.algorithm->library == CGAL_ext::VTP) {
-      mesh->prepared_solvers().solve(mesh->file, points, stops, choice, d, label);
-      return;
-    }
-    CGAL_ext::Geodesic_statistics stats;
-    std::vector<long> labels;
-    const std::vector<double> by_point =
-      geodesic_tool::compute_distances(mesh->file, points, choice, stats, return_sources ? &labels : nullptr);
-    std::copy(by_point.begin(), by_point.end(), d);
-    if(label)
-      std::copy(labels.begin(), labels.end(), label);
-  });
+  without_gil(callback, [&] { mesh->prepared_solvers().solve(mesh->file, points, stops, choice, d, label); });
   if(return_sources)
     return py::make_tuple(distance, nearest);
   return std::move(distance);
@@ -271,7 +288,7 @@ py::object distances(const Mesh_ptr& mesh, py::handle sources, const std::string
 py::object distance_matrix(const Mesh_ptr& mesh, py::handle sources, py::handle targets,
                            std::optional<double> max_distance, std::optional<int> threads, py::object progress)
 {
-  const Solver_choice choice = solver_choice("vtp", threads, std::nullopt, max_distance, false);
+  const Solver_choice choice = vtp_family_choice(threads, std::nullopt, max_distance);
   const std::vector<Surface_point> points = read_points(*mesh, sources, "source");
   if(points.empty())
     throw Tool_error("no source was given");
@@ -395,7 +412,7 @@ solvers of earlier solves, so that a solve costs what it sweeps.
            return "<cgal_ext_geodesics.Mesh with " + std::to_string(mesh.number_of_points()) + " vertices and " +
                   std::to_string(mesh.number_of_polygons()) + " faces>";
          })
-    .def("distances", &distances, py::arg("sources"), py::arg("algorithm") = "vtp", py::arg("threads") = py::none(),
+    .def("distances", &distances, py::arg("sources"), py::arg("algorithm") = py::none(), py::arg("threads") = py::none(),
          py::arg("max_distance") = py::none(), py::arg("stop_vertices") = py::none(), py::arg("lam") = py::none(),
          py::arg("return_sources") = false, py::arg("progress") = py::none(), R"doc(
 Geodesic distances from the nearest source to every vertex.
@@ -404,12 +421,16 @@ sources: a vertex id, a sequence of vertex ids, a face point
     ``(face, (b0, b1, b2))`` (barycentric coordinates in the order of the
     face's vertices), a sequence of face points, or two arrays
     ``(faces, barycentric)`` of shapes (k,) and (k, 3).
-algorithm: 'vtp' (the default), 'fwp_mmp' or 'mmp'; all exact.
-threads: None for every core, 1 for one thread; the distances are the same
-    for every number of threads. (MMP runs on one thread.)
+algorithm: the exact 'pvtp' (the default: VTP on threads), 'vtp' (one
+    thread, the fastest there), 'pmmp' (on threads), 'fwp_mmp', 'mmp'; the
+    approximate 'pavtp' and 'avtp' (never below the exact distance).
+threads: None for every core; a number for the parallel algorithms, 1 for
+    the others. A parallel algorithm gives the same bytes for every number
+    of threads; the sequential ones agree with it to round-off.
 max_distance: stop the propagation there; farther vertices get inf.
-stop_vertices: stop once these vertices are settled ('vtp' only).
-lam: approximate the distances from above (AVTP), the faster the smaller.
+stop_vertices: stop once these vertices are settled (the VTP family).
+lam: the approximation of 'pavtp' and 'avtp' (default 8), positive, the
+    smaller the faster and coarser; lam alone selects 'pavtp'.
 return_sources: also return the index of each vertex's nearest source (in
     the order of `sources`; -1 where no source reaches).
 progress: a function called a few times a second with the fraction done;

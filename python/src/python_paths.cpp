@@ -194,7 +194,8 @@ struct Python_paths
   std::unique_ptr<Input_faces> input_faces;
 };
 
-std::shared_ptr<Python_paths> make_paths(const Mesh_ptr& mesh, py::handle sources, const std::string& algorithm,
+std::shared_ptr<Python_paths> make_paths(const Mesh_ptr& mesh, py::handle sources,
+                                         const std::optional<std::string>& algorithm,
                                          std::optional<int> threads, std::optional<double> max_distance,
                                          py::object progress)
 {
@@ -225,13 +226,13 @@ void bind_paths(py::module_& m)
   py::class_<Python_paths, std::shared_ptr<Python_paths>>(m, "GeodesicPaths", R"doc(
 Exact shortest paths from a set of sources, built once and queried many times.
 
-GeodesicPaths(mesh, sources, algorithm='vtp', threads=None, max_distance=None,
-progress=None) keeps the windows of an exact propagation ('vtp', 'fwp_mmp' or
-'mmp'); then the distance, the nearest source and the shortest path of any
+GeodesicPaths(mesh, sources, algorithm=None, threads=None, max_distance=None,
+progress=None) keeps the windows of an exact propagation ('pvtp', the default,
+'vtp', 'pmmp', 'fwp_mmp' or 'mmp', as for Mesh.distances); then the distance, the nearest source and the shortest path of any
 vertex or face point are queries. Targets are vertex ids or face points
 ``(face, (b0, b1, b2))``, as sources are.
 )doc")
-    .def(py::init(&make_paths), py::arg("mesh"), py::arg("sources"), py::arg("algorithm") = "vtp",
+    .def(py::init(&make_paths), py::arg("mesh"), py::arg("sources"), py::arg("algorithm") = py::none(),
          py::arg("threads") = py::none(), py::arg("max_distance") = py::none(), py::arg("progress") = py::none())
     .def_property_readonly(
       "n_sources", [](const Python_paths& p) { return p.number_of_sources; }, "The number of sources.")

@@ -25,14 +25,6 @@ std::string normalized_name(std::string name)
   return name;
 }
 
-const geodesic_tool::Algorithm& tool_algorithm(const char* name)
-{
-  for(const geodesic_tool::Algorithm& a : geodesic_tool::algorithms)
-    if(std::string(a.name) == name)
-      return a;
-  throw std::logic_error(std::string("no algorithm ") + name);
-}
-
 /// Whether `h` is a Python or NumPy integer (not a bool).
 bool is_integer(py::handle h)
 {
@@ -74,6 +66,7 @@ Surface_point face_point(const Python_mesh& mesh, std::size_t face, py::handle b
   }
   s.text = "face " + std::to_string(face) + " at (" + number_text(s.barycentric[0]) + ", " +
            number_text(s.barycentric[1]) + ", " + number_text(s.barycentric[2]) + ")";
+  geodesic_tool::check_barycentric(s, role);
   geodesic_tool::check_surface_point_range(s, mesh.number_of_points(), mesh.number_of_polygons(), role);
   return s;
 }
@@ -93,40 +86,71 @@ void check_threads(std::optional<int> threads)
                      " (or None: every core), got " + std::to_string(*threads));
 }
 
-geodesic_tool::Solver_choice solver_choice(const std::string& algorithm, std::optional<int> threads,
+const geodesic_tool::Algorithm* find_algorithm(const std::string& name)
+{
+  for(const geodesic_tool::Algorithm& a : geodesic_tool::algorithms)
+    if(normalized_name(a.name) == normalized_name(name))
+      return &a;
+  return nullptr;
+}
+
+std::string python_name(const geodesic_tool::Algorithm& a)
+{
+  std::string name = a.name;
+  std::replace(name.begin(), name.end(), '-', '_');
+  return name;
+}
+
+std::string algorithm_names(bool exact_only)
+{
+  std::string names;
+  for(const geodesic_tool::Algorithm& a : geodesic_tool::algorithms)
+    if(!(exact_only && a.approximate) && (geodesic_tool::parallel_available || !a.parallel))
+      names += (names.empty() ? "'" : ", '") + python_name(a) + "'";
+  return names;
+}
+
+geodesic_tool::Solver_choice solver_choice(const std::optional<std::string>& algorithm, std::optional<int> threads,
                                            std::optional<double> lam, std::optional<double> max_distance,
                                            bool exact_only)
 {
-  const std::string name = normalized_name(algorithm);
-  if(name != "vtp" && name != "fwp-mmp" && name != "mmp")
-    throw Tool_error("unknown algorithm '" + algorithm + "' (use 'vtp', 'fwp_mmp' or 'mmp')");
+  const std::string name = algorithm ? *algorithm : std::string(geodesic_tool::default_vertex_solver);
+  const geodesic_tool::Algorithm* found = find_algorithm(name);
+  if(!found || (exact_only && found->approximate))
+    throw Tool_error((found ? "algorithm '" + name + "' is approximate; paths and Voronoi diagrams are exact (use "
+                            : "unknown algorithm '" + name + "' (use ") +
+                     algorithm_names(exact_only) + ")");
+  if(found->parallel && !geodesic_tool::parallel_available)
+    throw Tool_error("algorithm '" + name + "' needs TBB, and this module was built without it");
   check_threads(threads);
-  const bool parallel = geodesic_tool::parallel_available && (!threads || *threads > 1);
+  if(threads && *threads > 1 && !found->parallel)
+    throw Tool_error("algorithm '" + name + "' runs on one thread: for threads=" + std::to_string(*threads) +
+                     " use its parallel form (" + algorithm_names(exact_only) + ")");
+  geodesic_tool::Solver_choice choice;
+  choice.algorithm = found;
+  choice.batch_size = is_mmp_family(*found) ? CGAL_ext::default_window_batch_size : CGAL_ext::default_batch_size;
   if(lam) {
-    if(exact_only)
-      throw Tool_error("lam: paths and Voronoi diagrams are exact (leave lam=None)");
-    if(name != "vtp")
-      throw Tool_error("lam (the approximation) applies to algorithm 'vtp' only");
+    if(!found->approximate)
+      throw Tool_error("lam (the approximation) applies to algorithm 'avtp' and 'pavtp' only, not '" + name + "'");
     if(!(*lam > 0) || !std::isfinite(*lam))
       throw Tool_error("lam must be a positive, finite number, got " + number_text(*lam));
-  }
-  const char* tool_name = name == "mmp"       ? "mmp"
-                          : name == "fwp-mmp" ? (parallel ? "pmmp" : "fwp-mmp")
-                          : lam               ? (parallel ? "pavtp" : "avtp")
-                                              : (parallel ? "pvtp" : "vtp");
-  geodesic_tool::Solver_choice choice;
-  choice.algorithm = &tool_algorithm(tool_name);
-  choice.batch_size =
-    is_mmp_family(*choice.algorithm) ? CGAL_ext::default_window_batch_size : CGAL_ext::default_batch_size;
-  if(lam)
     choice.lambda = *lam;
-  choice.threads = choice.algorithm->parallel && threads ? *threads : 0;
+  }
+  choice.threads = found->parallel && threads ? *threads : 0;
   if(max_distance) {
     if(!(*max_distance >= 0))
       throw Tool_error("max_distance must be a non-negative number, got " + number_text(*max_distance));
     choice.max_distance = *max_distance;
   }
   return choice;
+}
+
+geodesic_tool::Solver_choice vtp_family_choice(std::optional<int> threads, std::optional<double> lam,
+                                               std::optional<double> max_distance)
+{
+  const char* name = geodesic_tool::parallel_available ? (lam ? "pavtp" : "pvtp") : (lam ? "avtp" : "vtp");
+  return solver_choice(std::string(name), geodesic_tool::parallel_available ? threads : std::nullopt, lam,
+                       max_distance, false);
 }
 
 Surface_point read_point(const Python_mesh& mesh, py::handle point, const char* role)

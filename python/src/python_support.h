@@ -53,11 +53,17 @@ struct Python_mesh
   std::size_t number_of_polygons() const { return file.soup.polygons.size(); }
 };
 
-/// The choices every solving call takes from Python: the algorithm, threads, lambda, max
-/// distance, as the tool's `Solver_choice`; `exact_only` refuses `lam`.
-geodesic_tool::Solver_choice solver_choice(const std::string& algorithm, std::optional<int> threads,
+/// The choices every solving call takes from Python: an algorithm of the tool's (its name with
+/// '_' for '-'; None: the default, 'pvtp'), threads, lam, max distance, checked as the tool
+/// checks them; `exact_only` refuses the approximate algorithms.
+geodesic_tool::Solver_choice solver_choice(const std::optional<std::string>& algorithm, std::optional<int> threads,
                                            std::optional<double> lam, std::optional<double> max_distance,
                                            bool exact_only);
+/// The choice of the functions that take no algorithm (matrices, sampling): PVTP, or PAVTP with
+/// `lam`, whatever `threads` is, so that every thread count gives the same bytes (VTP and AVTP in
+/// a build without TBB).
+geodesic_tool::Solver_choice vtp_family_choice(std::optional<int> threads, std::optional<double> lam,
+                                               std::optional<double> max_distance);
 
 /// Throws GeodesicError unless `threads` is None or from 1 to geodesic_tool::max_threads.
 void check_threads(std::optional<int> threads);

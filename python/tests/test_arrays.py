@@ -60,7 +60,7 @@ def test_distances_shapes_and_dtypes(mushroom):
     d, labels = mushroom.distances([0, 9], return_sources=True)
     check_array(d, (n,), np.float64, "distances with labels")
     check_array(labels, (n,), np.int64, "labels")
-    for algorithm in ("vtp", "fwp_mmp", "mmp", "fwp-mmp", "VTP"):
+    for algorithm in ("pvtp", "vtp", "pmmp", "fwp_mmp", "mmp", "fwp-mmp", "VTP", "avtp", "pavtp"):
         check_array(mushroom.distances(0, algorithm=algorithm), (n,), np.float64, f"distances, {algorithm}")
     d = mushroom.distances(0, max_distance=0.1)
     assert np.isinf(d).any() and np.all(d[np.isfinite(d)] <= 0.1)
@@ -360,7 +360,7 @@ def test_symmetry_and_triangle_inequality(random_mesh):
     assert slack.max() <= 1e-12 * scale, (f"{what}: triangle inequality broken by {slack.max()} for vertices "
                                           f"{[int(ids[i]) for i in worst]}")
     # every algorithm agrees
-    for algorithm in ("fwp_mmp", "mmp"):
+    for algorithm in ("vtp", "pmmp", "fwp_mmp", "mmp"):
         d = mesh.distances(int(ids[0]), algorithm=algorithm)
         np.testing.assert_allclose(d[ids], D[0], rtol=1e-12, atol=1e-14 * scale, err_msg=f"{what}, {algorithm}")
     # geodesic distances are at least the Euclidean ones
@@ -388,7 +388,7 @@ def test_path_lengths_are_the_distances(random_mesh):
 # the same bytes on any number of threads
 
 
-def results_on_threads(mesh, threads, algorithm="vtp"):
+def results_on_threads(mesh, threads, algorithm="pvtp"):
     """Every result of the module on this many threads, as bytes, named."""
     sources = [0, 5, (3, (0.2, 0.3, 0.5))]
     out = {}
@@ -401,7 +401,7 @@ def results_on_threads(mesh, threads, algorithm="vtp"):
     p = geo.GeodesicPaths(mesh, sources, threads=threads, algorithm=algorithm)
     out.update({"paths distances": p.distances(), "paths sources": p.nearest_sources(),
                 "path": p.path(mesh.n_vertices - 1)})
-    if algorithm == "vtp":
+    if algorithm == "pvtp":
         out["lam"] = mesh.distances(sources, threads=threads, lam=2.0)
         out["stop_vertices"] = mesh.distances(sources, threads=threads, stop_vertices=[10, 20])
         out["matrix"] = mesh.distance_matrix(sources, threads=threads)
@@ -420,45 +420,31 @@ def assert_same_bytes(a, b, what):
     assert not different, f"{what}: {', '.join(different)} differ"
 
 
-@pytest.mark.parametrize("algorithm", ["vtp", "fwp_mmp", "mmp"])
+@pytest.mark.parametrize("algorithm", ["pvtp", "pmmp"])
 def test_threads_give_identical_bytes(random_mesh, algorithm):
     mesh, what = random_mesh.mesh, random_mesh.what
-    two = results_on_threads(mesh, 2, algorithm)
-    for threads in (4, None):
-        assert_same_bytes(two, results_on_threads(mesh, threads, algorithm),
-                          f"{what}, {algorithm}: threads=2 and threads={threads}")
-    # One thread and two: the same but for two known bugs, tested on their own below: fwp_mmp's
-    # results and the Voronoi bisectors' points of vtp.
-    if algorithm == "fwp_mmp":
-        return
     one = results_on_threads(mesh, 1, algorithm)
-    if algorithm == "vtp":
-        one = {k: v for k, v in one.items() if not k.startswith("bisector")}
-        two = {k: v for k, v in two.items() if not k.startswith("bisector")}
-    assert_same_bytes(one, two, f"{what}, {algorithm}: threads=1 and threads=2")
+    for threads in (2, 4, None):
+        assert_same_bytes(one, results_on_threads(mesh, threads, algorithm),
+                          f"{what}, {algorithm}: threads=1 and threads={threads}")
 
 
-@pytest.mark.xfail(strict=True, reason="module bug: algorithm='fwp_mmp' runs the sequential FWP-MMP on threads=1 "
-                                       "and PMMP on more, whose distances differ in the last bits (1-2 ulps), "
-                                       "though the docs say the results are the same for every number of threads")
-def test_fwp_mmp_distances_identical_on_one_and_two_threads(elephant):
-    one = elephant.distances(0, algorithm="fwp_mmp", threads=1)
-    two = elephant.distances(0, algorithm="fwp_mmp", threads=2)
-    assert one.tobytes() == two.tobytes(), (f"elephant.off, fwp_mmp from vertex 0: {np.sum(one != two)} distances "
-                                            f"differ by up to {np.abs(one - two).max()}")
-
-
-@pytest.mark.xfail(strict=True, reason="module bug: the Voronoi bisectors' points of algorithm='vtp' differ in the "
-                                       "last bits (~1e-15) between threads=1 (VTP) and threads>=2 (PVTP), though "
-                                       "the cells and distances are the same")
-def test_voronoi_bisectors_identical_on_one_and_two_threads(elephant):
-    one = elephant.voronoi([0, 100, 1000, 2000], threads=1)
-    two = elephant.voronoi([0, 100, 1000, 2000], threads=2)
-    assert one.cells.tobytes() == two.cells.tobytes()
-    for i, (a, b) in enumerate(zip(one.bisectors, two.bisectors)):
-        assert a["points"].shape == b["points"].shape, f"bisector {i}"
-        assert a["points"].tobytes() == b["points"].tobytes(), \
-            f"elephant.off, bisector {i}: points differ by up to {np.abs(a['points'] - b['points']).max()}"
+@pytest.mark.parametrize("sequential,parallel", [("vtp", "pvtp"), ("fwp_mmp", "pmmp"), ("mmp", "pvtp")])
+def test_sequential_and_parallel_agree_to_round_off(random_mesh, sequential, parallel):
+    mesh, what = random_mesh.mesh, random_mesh.what
+    sources = [0, 5, (3, (0.2, 0.3, 0.5))]
+    a, cells_a = mesh.distances(sources, algorithm=sequential, return_sources=True)
+    b, cells_b = mesh.distances(sources, algorithm=parallel, return_sources=True)
+    scale = np.ptp(mesh.vertices, axis=0).max()
+    assert np.array_equal(np.isfinite(a), np.isfinite(b)), what
+    finite = np.isfinite(a)
+    assert np.abs(a[finite] - b[finite]).max(initial=0) <= 1e-12 * scale, f"{what}: {sequential} against {parallel}"
+    va = mesh.voronoi(sources, algorithm=sequential)
+    vb = mesh.voronoi(sources, algorithm=parallel)
+    # a vertex equidistant from two sites may fall on either side
+    tied = np.abs(va.distances - vb.distances) > 0
+    assert np.mean(va.cells == vb.cells) > 0.99, f"{what}: Voronoi cells of {sequential} and {parallel}"
+    assert not np.any(tied & (np.abs(va.distances - vb.distances) > 1e-12 * scale)), what
 
 
 def test_threads_identical_on_a_bundled_mesh(elephant):

@@ -56,8 +56,8 @@ def cases(V, F, m):
         # barycentric coordinates
         "barycentric not summing to 1": (lambda: m.distances((3, (0.2, 0.3, 0.6))), r"sum to 1"),
         "barycentric negative": (lambda: m.distances((3, (-0.2, 0.7, 0.5))), r"non-negative"),
-        "barycentric NaN": (lambda: m.distances((3, (np.nan, 0.5, 0.5))), r"sum to 1"),
-        "barycentric infinite": (lambda: m.distances((3, (np.inf, 0.5, 0.5))), r"sum to 1"),
+        "barycentric NaN": (lambda: m.distances((3, (np.nan, 0.5, 0.5))), r"must be finite numbers"),
+        "barycentric infinite": (lambda: m.distances((3, (np.inf, 0.5, 0.5))), r"must be finite numbers"),
         "two barycentric coordinates": (lambda: m.distances((3, (0.5, 0.5))), r"face point \(face, \(b0, b1, b2\)\)"),
         "barycentric as arrays, wrong shape": (lambda: m.distances((np.array([0, 1]), np.ones((3, 3)) / 3)),
                                                r"shape \(2, 3\)"),
@@ -105,8 +105,8 @@ def cases(V, F, m):
         "unknown algorithm": (lambda: m.distances(0, algorithm="dijkstra"), r"unknown algorithm 'dijkstra'"),
         "unknown algorithm for paths": (lambda: P(0, algorithm="exact"), r"unknown algorithm 'exact'"),
         "unknown algorithm for voronoi": (lambda: m.voronoi([0, 1], algorithm="x"), r"unknown algorithm 'x'"),
-        "lam with fwp_mmp": (lambda: m.distances(0, algorithm="fwp_mmp", lam=4), r"lam.*'vtp' only"),
-        "lam with mmp": (lambda: m.distances(0, algorithm="mmp", lam=4), r"lam.*'vtp' only"),
+        "lam with fwp_mmp": (lambda: m.distances(0, algorithm="fwp_mmp", lam=4), r"lam.*'avtp' and 'pavtp' only"),
+        "lam with mmp": (lambda: m.distances(0, algorithm="mmp", lam=4), r"lam.*'avtp' and 'pavtp' only"),
         "lam zero": (lambda: m.distances(0, lam=0), r"lam must be a positive"),
         "lam negative for sampling": (lambda: m.farthest_point_sampling(3, lam=-1), r"lam must be a positive"),
         "lam infinite": (lambda: m.distances(0, lam=np.inf), r"lam must be a positive, finite"),
@@ -124,9 +124,11 @@ def cases(V, F, m):
                                                r"max_distance must be a non-negative"),
         "negative max_distance for paths": (lambda: P(0, max_distance=-0.5), r"max_distance must be a non-negative"),
         "stop_vertices with mmp": (lambda: m.distances(0, algorithm="mmp", stop_vertices=[5]),
-                                   r"stop_vertices works with algorithm 'vtp' only"),
+                                   r"stop_vertices works with the VTP family only"),
+        "stop_vertices with pmmp": (lambda: m.distances(0, algorithm="pmmp", stop_vertices=[5]),
+                                    r"stop_vertices works with the VTP family only"),
         "stop_vertices with fwp_mmp": (lambda: m.distances(0, algorithm="fwp_mmp", stop_vertices=[5]),
-                                       r"stop_vertices works with algorithm 'vtp' only"),
+                                       r"stop_vertices works with the VTP family only"),
         "stop vertex a face point": (lambda: m.distances(0, stop_vertices=[(0, (0.2, 0.3, 0.5))]),
                                      r"a vertex id is expected"),
         # no sources
@@ -253,23 +255,37 @@ def test_a_progress_function_that_raises_propagates_its_exception(elephant, elep
 
 
 # ----------------------------------------------------------------------------------------------
-# Known bugs: each test fails for the reason given (pytest reports them as xfailed).
+# Exact only, and argument names
 
 
-@pytest.mark.xfail(strict=True, raises=TypeError,
-                   reason="module bug: GeodesicPaths takes no lam, so lam=4 raises pybind11's TypeError "
-                          "'incompatible constructor arguments'; the C++ check 'lam: paths and Voronoi diagrams "
-                          "are exact' (solver_choice, exact_only) is never reached")
-def test_lam_for_paths(small):
-    with pytest.raises(geo.GeodesicError, match="lam"):
-        geo.GeodesicPaths(small[2], 0, lam=4)
+@pytest.mark.parametrize("call", ["paths", "voronoi"])
+def test_lam_is_no_argument_of_the_exact_applications(small, call):
+    # an unknown keyword is Python's own TypeError, naming the argument
+    with pytest.raises(TypeError, match="lam|incompatible"):
+        if call == "paths":
+            geo.GeodesicPaths(small[2], 0, lam=4)
+        else:
+            small[2].voronoi([0, 1], lam=4)
 
 
-@pytest.mark.xfail(strict=True, raises=TypeError,
-                   reason="module bug: Mesh.voronoi takes no lam, so lam=4 raises TypeError, not GeodesicError")
-def test_lam_for_voronoi(small):
-    with pytest.raises(geo.GeodesicError, match="lam"):
-        small[2].voronoi([0, 1], lam=4)
+@pytest.mark.parametrize("algorithm", ["avtp", "pavtp"])
+def test_approximate_algorithms_refused_by_paths_and_voronoi(small, algorithm):
+    with pytest.raises(geo.GeodesicError, match=f"'{algorithm}' is approximate; paths and Voronoi diagrams are exact"):
+        geo.GeodesicPaths(small[2], 0, algorithm=algorithm)
+    with pytest.raises(geo.GeodesicError, match=f"'{algorithm}' is approximate"):
+        small[2].voronoi([0, 1], algorithm=algorithm)
+
+
+@pytest.mark.parametrize("algorithm", ["vtp", "avtp", "fwp_mmp", "mmp"])
+def test_sequential_algorithms_refuse_more_threads(small, algorithm):
+    with pytest.raises(geo.GeodesicError, match=f"'{algorithm}' runs on one thread: for threads=2"):
+        small[2].distances(0, algorithm=algorithm, threads=2)
+    small[2].distances(0, algorithm=algorithm, threads=1)  # one thread is what it runs on
+
+
+def test_lam_with_an_exact_algorithm(small):
+    with pytest.raises(geo.GeodesicError, match="lam .* applies to algorithm 'avtp' and 'pavtp' only, not 'pvtp'"):
+        small[2].distances(0, algorithm="pvtp", lam=4)
 
 
 @pytest.mark.parametrize("max_distance", [-np.inf, np.nan], ids=["-inf", "nan"])
@@ -283,14 +299,11 @@ def test_barycentric_coordinates_not_numbers(small):
         small[2].distances((3, ("a", "b", "c")))
 
 
-@pytest.mark.xfail(strict=True,
-                   reason="module bug: the message of bad barycentric coordinates gives them in another order "
-                          "than the caller's (the solver mesh's corner order): (0.2, 0.3, 0.6) is reported as "
-                          "(0.59999999999999998, 0.20000000000000001, 0.29999999999999999)")
 def test_bad_barycentric_message_gives_the_coordinates_as_given(small):
     with pytest.raises(geo.GeodesicError) as info:
         small[2].distances((3, (0.25, 0.5, 0.375)))
     assert "(0.25, 0.5, 0.375)" in str(info.value), str(info.value)
+    assert "sum to 1.125, not 1" in str(info.value), str(info.value)
 
 
 # ----------------------------------------------------------------------------------------------

@@ -45,14 +45,17 @@ def assert_close(got, expected, what, rtol=1e-12):
 
 DISTANCE_CASES = {
     # name: (Mesh.distances options, the tool's options)
-    "vtp-threads1": (dict(threads=1), ["--algorithm", "vtp"]),
-    "vtp-threads2": (dict(threads=2), ["--algorithm", "pvtp", "--threads", "2"]),
-    "vtp-default": (dict(), ["--algorithm", "pvtp"]),
-    "fwp_mmp-threads1": (dict(algorithm="fwp_mmp", threads=1), ["--algorithm", "fwp-mmp"]),
-    "fwp_mmp": (dict(algorithm="fwp_mmp"), ["--algorithm", "pmmp"]),
+    "pvtp-default": (dict(), ["--algorithm", "pvtp"]),
+    "pvtp-threads1": (dict(threads=1), ["--algorithm", "pvtp", "--threads", "1"]),
+    "pvtp-threads2": (dict(threads=2), ["--algorithm", "pvtp", "--threads", "2"]),
+    "vtp": (dict(algorithm="vtp"), ["--algorithm", "vtp"]),
+    "vtp-threads1": (dict(algorithm="vtp", threads=1), ["--algorithm", "vtp"]),
+    "fwp_mmp": (dict(algorithm="fwp_mmp"), ["--algorithm", "fwp-mmp"]),
+    "pmmp": (dict(algorithm="pmmp"), ["--algorithm", "pmmp"]),
     "mmp": (dict(algorithm="mmp"), ["--algorithm", "mmp"]),
     "lam4": (dict(lam=4), ["--algorithm", "pavtp", "--lambda", "4"]),
-    "lam4-threads1": (dict(lam=4, threads=1), ["--algorithm", "avtp", "--lambda", "4"]),
+    "avtp-lam4": (dict(algorithm="avtp", lam=4), ["--algorithm", "avtp", "--lambda", "4"]),
+    "avtp-default-lam": (dict(algorithm="avtp"), ["--algorithm", "avtp"]),
     "max_distance": (dict(max_distance=0.2), ["--max-distance", repr(0.2)]),
     "max_distance-mmp": (dict(algorithm="mmp", max_distance=0.15),
                          ["--algorithm", "mmp", "--max-distance", repr(0.15)]),
@@ -72,7 +75,8 @@ def test_distances_from_a_vertex(bundled, run_tool, tmp_path, case):
         assert d[np.isfinite(d)].max() <= options["max_distance"]
 
 
-@pytest.mark.parametrize("algorithm,tool_algorithm", [("vtp", "vtp"), ("mmp", "mmp"), ("fwp_mmp", "fwp-mmp")])
+@pytest.mark.parametrize("algorithm,tool_algorithm",
+                         [("pvtp", "pvtp"), ("vtp", "vtp"), ("mmp", "mmp"), ("fwp_mmp", "fwp-mmp"), ("pmmp", "pmmp")])
 def test_distances_from_a_face_point(bundled, run_tool, tmp_path, algorithm, tool_algorithm):
     path, mesh = bundled
     d = mesh.distances(FACE_POINT, algorithm=algorithm, threads=1)
@@ -93,7 +97,7 @@ def test_distances_from_face_points_as_two_arrays(bundled, run_tool, tmp_path):
     assert_exact(labels, load_column(tmp_path / "l.txt", np.int64), f"{path.name}: nearest face point")
 
 
-@pytest.mark.parametrize("algorithm,tool_algorithm", [("vtp", "pvtp"), ("mmp", "mmp"), ("fwp_mmp", "pmmp")])
+@pytest.mark.parametrize("algorithm,tool_algorithm", [("pvtp", "pvtp"), ("mmp", "mmp"), ("pmmp", "pmmp")])
 def test_distances_from_several_sources_with_labels(bundled, run_tool, tmp_path, algorithm, tool_algorithm):
     path, mesh = bundled
     sources = SEVERAL + [FACE_POINT]
@@ -216,7 +220,7 @@ def read_dual(path):
     return np.array(edges, dtype=np.int64).reshape(-1, 2), np.array(triangles, dtype=np.int64).reshape(-1, 3)
 
 
-@pytest.mark.parametrize("algorithm,tool_algorithm", [("vtp", "pvtp"), ("mmp", "mmp")])
+@pytest.mark.parametrize("algorithm,tool_algorithm", [("pvtp", "pvtp"), ("vtp", "vtp"), ("mmp", "mmp")])
 def test_voronoi(bundled, run_tool, tmp_path, algorithm, tool_algorithm):
     path, mesh = bundled
     sources = [0, 100, 1000, 2000, FACE_POINT]
@@ -249,7 +253,7 @@ SAMPLING_CASES = {
     "firsts": (dict(count=7, first=[5, 17, 900]), ["--count", "7", "--first", "5,17,900"]),
     "radius": (dict(count=500, radius=0.5), ["--count", "500", "--radius", repr(0.5)]),
     "lam": (dict(count=8, lam=4.0), ["--count", "8", "--algorithm", "pavtp", "--lambda", "4"]),
-    "threads1": (dict(count=8, threads=1), ["--count", "8", "--algorithm", "vtp"]),
+    "threads1": (dict(count=8, threads=1), ["--count", "8", "--threads", "1"]),
 }
 
 
@@ -292,7 +296,7 @@ def tool_stats(stderr):
     return stats
 
 
-@pytest.mark.parametrize("algorithm,tool_algorithm", [("vtp", "pvtp"), ("fwp_mmp", "pmmp"), ("mmp", "mmp")])
+@pytest.mark.parametrize("algorithm,tool_algorithm", [("pvtp", "pvtp"), ("pmmp", "pmmp"), ("mmp", "mmp")])
 @pytest.mark.parametrize("target", [1500, (77, (0.2, 0.3, 0.5))], ids=["vertex", "face-point"])
 def test_path(bundled, run_tool, tmp_path, algorithm, tool_algorithm, target):
     path, mesh = bundled

@@ -130,6 +130,7 @@ def progress_calls(big_grid, elephant):
         "distances vtp": lambda p: mesh.distances(0, progress=p),
         "distances mmp": lambda p: mesh.distances(0, algorithm="mmp", progress=p),
         "distances fwp_mmp": lambda p: mesh.distances(0, algorithm="fwp_mmp", progress=p),
+        "distances pmmp": lambda p: mesh.distances(0, algorithm="pmmp", progress=p),
         "paths": lambda p: geo.GeodesicPaths(mesh, [0, n - 1], progress=p),
         "dense matrix": lambda p: elephant.distance_matrix(np.arange(150), threads=1, progress=p),
         "sparse matrix": lambda p: elephant.distance_matrix(np.arange(600), max_distance=0.2, progress=p),
@@ -139,33 +140,11 @@ def progress_calls(big_grid, elephant):
     }
 
 
-PROGRESS_BUGS = {
-    "distances fwp_mmp": lambda p: mesh.distances(0, algorithm="fwp_mmp", progress=p),
-        "paths": lambda p: geo.GeodesicPaths(mesh, [0, n - 1], progress=p),
-        "dense matrix": lambda p: elephant.distance_matrix(np.arange(150), threads=1, progress=p),
-        "sparse matrix": lambda p: elephant.distance_matrix(np.arange(600), max_distance=0.2, progress=p),
-        "voronoi": lambda p: mesh.voronoi([0, n - 1, n // 2], progress=p),
-        "sampling": lambda p: mesh.farthest_point_sampling(2, progress=p),
-        "patterns": lambda p: elephant.detect_patterns(center=0, radius=0.1, progress=p),
-    }
+PROGRESS_NAMES = ["distances vtp threads=1", "distances vtp", "distances mmp", "distances fwp_mmp",
+                  "distances pmmp", "paths", "dense matrix", "sparse matrix", "voronoi", "sampling", "patterns"]
 
 
-PROGRESS_BUGS = {
-    "distances fwp_mmp": "module bug: algorithm='fwp_mmp' on more than one thread (PMMP) reports to Python only "
-                         "late: the first call comes with fraction ~0.99 (160,000-vertex grid, 0.4 s into a 1.1 s "
-                         "run; on 1,000,000 vertices 2.4 s in, at 0.974): the reports of the TBB worker threads "
-                         "are skipped by Python_callback::call",
-}
-
-
-def progress_params():
-    names = ["distances vtp threads=1", "distances vtp", "distances mmp", "distances fwp_mmp", "paths",
-             "dense matrix", "sparse matrix", "voronoi", "sampling", "patterns"]
-    return [pytest.param(k, marks=pytest.mark.xfail(strict=True, reason=PROGRESS_BUGS[k])) if k in PROGRESS_BUGS
-            else k for k in names]
-
-
-@pytest.mark.parametrize("name", progress_params())
+@pytest.mark.parametrize("name", PROGRESS_NAMES)
 def test_progress_fractions(big_grid, elephant, name):
     calls, seconds = record_progress(progress_calls(big_grid, elephant)[name])
     what = f"{name}: {len(calls)} progress calls in {seconds:.2f} s"
@@ -230,11 +209,13 @@ ELEPHANT_SOURCES = [0, 5, 700]
 CHECKS = {
     # after a cancelled computation, these solves must give what a fresh Mesh gives
     "vtp threads=1": dict(threads=1),
+    "sequential vtp": dict(algorithm="vtp"),
     "vtp": dict(),
     "lam": dict(lam=2.0),
     "mmp": dict(algorithm="mmp"),
-    "fwp_mmp threads=1": dict(algorithm="fwp_mmp", threads=1),
     "fwp_mmp": dict(algorithm="fwp_mmp"),
+    "pmmp threads=1": dict(algorithm="pmmp", threads=1),
+    "pmmp": dict(algorithm="pmmp"),
 }
 
 
@@ -246,8 +227,9 @@ def cancel_calls(big_grid, elephant):
         "distances vtp": lambda p: mesh.distances([0, n - 1], progress=p),
         "distances lam": lambda p: mesh.distances(0, lam=2.0, progress=p),
         "distances mmp": lambda p: mesh.distances(0, algorithm="mmp", progress=p),
-        "distances fwp_mmp threads=1": lambda p: mesh.distances(0, algorithm="fwp_mmp", threads=1, progress=p),
         "distances fwp_mmp": lambda p: mesh.distances(0, algorithm="fwp_mmp", progress=p),
+        "distances pmmp threads=1": lambda p: mesh.distances(0, algorithm="pmmp", threads=1, progress=p),
+        "distances pmmp": lambda p: mesh.distances(0, algorithm="pmmp", progress=p),
         "paths": lambda p: geo.GeodesicPaths(mesh, [0, n - 1], progress=p),
         "dense matrix": lambda p: elephant.distance_matrix(np.arange(400), threads=1, progress=p),
         "sparse matrix": lambda p: elephant.distance_matrix(np.arange(2000), max_distance=0.3, progress=p),
@@ -258,7 +240,8 @@ def cancel_calls(big_grid, elephant):
 
 
 CANCEL_NAMES = ["distances vtp threads=1", "distances vtp", "distances lam", "distances mmp",
-                "distances fwp_mmp threads=1", "distances fwp_mmp", "paths", "dense matrix", "sparse matrix",
+                "distances fwp_mmp", "distances pmmp threads=1", "distances pmmp", "paths", "dense matrix",
+                "sparse matrix",
                 "voronoi", "sampling", "patterns"]
 
 
@@ -281,9 +264,10 @@ def test_cancel(big_grid, fresh_results, elephant, name):
     assert time.monotonic() - t0 < 10
     # the meshes still give the results of fresh ones
     checks = {"distances vtp threads=1": ["vtp threads=1"], "distances vtp": ["vtp"], "distances lam": ["lam"],
-              "distances mmp": ["mmp"], "distances fwp_mmp threads=1": ["fwp_mmp threads=1"],
-              "distances fwp_mmp": ["fwp_mmp"], "dense matrix": ["matrix"], "sparse matrix": ["matrix"],
-              "patterns": ["matrix"]}.get(name, ["vtp", "vtp threads=1"])
+              "distances mmp": ["mmp"], "distances fwp_mmp": ["fwp_mmp"],
+              "distances pmmp threads=1": ["pmmp threads=1"], "distances pmmp": ["pmmp"],
+              "dense matrix": ["matrix"], "sparse matrix": ["matrix"],
+              "patterns": ["matrix"]}.get(name, ["vtp", "vtp threads=1", "sequential vtp"])
     for check in checks:
         if check == "matrix":
             got = elephant.distance_matrix(ELEPHANT_SOURCES)
@@ -408,14 +392,10 @@ def test_interrupt_a_long_solve_with_setitimer(huge_grid):
     assert mesh.distances(len(V) // 2, threads=1, max_distance=0.05).tobytes() == reference.tobytes()
 
 
-@pytest.mark.xfail(reason="module bug: algorithm='fwp_mmp' on more than one thread (PMMP) calls the library's "
-                          "callback mostly from TBB worker threads, where Python_callback::call skips it; on "
-                          "1,000,000 vertices nothing reaches Python for the first ~2.4 s, so Ctrl-C 0.3 s in "
-                          "takes 1.9-2 s (idle machine; 2.5-7 s under load). Not strict: it depends on the machine")
-def test_interrupt_fwp_mmp_on_threads(huge_grid):
+def test_interrupt_pmmp_on_threads(huge_grid):
     V, F, mesh, reference = huge_grid
-    result = interrupt(lambda: mesh.distances(0, algorithm="fwp_mmp"))
+    result = interrupt(lambda: mesh.distances(0, algorithm="pmmp"))
     try:
-        assert_interrupted(result, "fwp_mmp distances on 1,000,000 vertices, every core")
+        assert_interrupted(result, "pmmp distances on 1,000,000 vertices, every core")
     finally:
         assert mesh.distances(len(V) // 2, threads=1, max_distance=0.05).tobytes() == reference.tobytes()

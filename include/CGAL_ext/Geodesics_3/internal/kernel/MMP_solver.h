@@ -77,7 +77,7 @@ public:
     const auto start = Clock::now();
     check_has_sources(m_mesh, m_sources);
     m_main_slot = m_windows.use_one_slot_per_thread(m_parallel);
-    m_vertices_reached = 0;
+    m_front = 0;
     start_progress();
     start_from_sources();
     if(m_parallel)
@@ -156,8 +156,6 @@ private:
 
   void set_distance(int v, const Vertex_update& u)
   {
-    if(m_distance[v] == infinity())
-      ++m_vertices_reached;
     m_distance[v] = u.distance;
     m_nearest_source[v] = u.source;
     if(m_emits_when_taken[v])
@@ -280,11 +278,14 @@ private:
     m_emitted_windows.clear();
   }
 
-  // How far the run is, for the caller's callback: the share of the vertices reached, or of the
-  // max distance at the window taken last.
+  // How far the run is, for the caller's callback: the share of the vertices whose distance is
+  // behind the front (the key of the windows taken last), which are settled, or of the max
+  // distance. (A window reaches vertices far ahead of the front, so that the vertices reached
+  // would say too much; the count reads every vertex, but only at a report, a few times a second.)
   double done_fraction(double front) const
   {
-    const double by_vertices = double(m_vertices_reached) / double(std::max<std::size_t>(1, m_mesh.number_of_vertices));
+    const auto settled = std::count_if(m_distance.begin(), m_distance.end(), [front](double d) { return d <= front; });
+    const double by_vertices = double(settled) / double(std::max<std::size_t>(1, m_distance.size()));
     return m_max_distance < infinity() && m_max_distance > 0 ? std::max(by_vertices, front / m_max_distance)
                                                              : by_vertices;
   }
@@ -358,7 +359,7 @@ private:
       m_statistics.seconds_selection += seconds_since(start);
       if(n == 0 && m_emitted_windows.empty())
         return;
-      report_progress([&] { return done_fraction(0); });
+      report_progress([&] { return done_fraction(m_front); });
       start = Clock::now();
       propagate_selected(n);
       m_statistics.seconds_propagation += seconds_since(start);
@@ -395,6 +396,8 @@ private:
             emit_from_vertex(e.second.vertex);
           continue;
         }
+        if(n == 0) // the round's lowest window key: every distance below it is settled
+          m_front = std::max(m_front, e.first);
         if(selected.size() <= n)
           selected.resize(n + 1);
         selected[n].window = e.second.window;
@@ -513,7 +516,7 @@ private:
   std::vector<std::uint8_t> m_emits_when_taken; // pseudo-source or source
   Edge_window_store m_windows;
   std::size_t m_main_slot = 0; // the pool slot of the thread running run()
-  std::size_t m_vertices_reached = 0; // vertices given a distance in this run (for the callback)
+  double m_front = 0;          // PMMP: the lowest window key of the last round (for the callback)
   const bool m_use_heap;       // MMP; otherwise buckets
   Min_heap<Queue_item> m_heap;
   Bucket_queue<Queue_item> m_buckets;
