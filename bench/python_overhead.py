@@ -6,9 +6,10 @@
    `seconds_setup` (from --stats) against the module's first call on a fresh Mesh (set-up and
    solve) and a second call on the same Mesh (prepared: the solve only).
 2. Local rows (every vertex within R mean edge lengths of each of K sources, one thread):
-   bench_matrix (the C++ API, geodesic_sparse_distance_rows) against Mesh.distance_matrix with
-   max_distance (one call, a SciPy CSR matrix) and against K calls of Mesh.distances with
-   max_distance on one Mesh (each a dense (n,) array).
+   bench_matrix (the C++ API, one geodesic_sparse_distance_rows call, its set-up included)
+   against Mesh.distance_matrix with max_distance (a SciPy CSR matrix) on a new Mesh (set-up
+   included) and again on the same Mesh, and against K calls of Mesh.distances(algorithm="vtp")
+   with max_distance on that Mesh (each a dense (n,) array).
 
 Prints one line per run and the medians. Run it with Debian's interpreter and the module on
 the path, with nothing else running:
@@ -17,8 +18,10 @@ the path, with nothing else running:
 """
 
 import argparse
+import os
 import statistics
 import subprocess
+import tempfile
 import time
 
 import numpy as np
@@ -27,8 +30,10 @@ import cgal_ext_geodesics as geo
 
 
 def tool_solve(tool, mesh):
-    out = subprocess.run([tool, "distances", mesh, "--source", "0", "--algorithm", "vtp", "--stats",
-                          "--output", "/dev/null"], capture_output=True, text=True, check=True).stderr
+    with tempfile.TemporaryDirectory() as work:
+        out = subprocess.run([tool, "distances", mesh, "--source", "0", "--algorithm", "vtp", "--stats",
+                              "--output", os.path.join(work, "d.txt")], capture_output=True, text=True,
+                             check=True).stderr
     stats = dict(line.split("=", 1) for line in out.splitlines() if "=" in line)
     return float(stats["seconds_setup"]), float(stats["seconds_solve"])
 
@@ -59,6 +64,8 @@ def cpp_rows(bench_matrix, mesh_path, rows, radius_edges):
 
 
 def python_rows(mesh_path, rows, radius_edges):
+    """Per row: distance_matrix on a new Mesh (its set-up included, as in the C++ call), again on
+    the same Mesh (reused), and `rows` calls of distances on a reused Mesh."""
     mesh = geo.read_mesh(mesh_path)
     n = mesh.n_vertices
     # the sources bench_matrix takes: vertex i * n / rows
@@ -66,14 +73,17 @@ def python_rows(mesh_path, rows, radius_edges):
     radius = radius_edges * mean_edge_length(mesh)
     t = time.perf_counter()
     matrix = mesh.distance_matrix(sources, max_distance=radius, threads=1)
-    one_call = (time.perf_counter() - t) / rows
-    fresh = geo.read_mesh(mesh_path)
+    first_call = (time.perf_counter() - t) / rows
+    t = time.perf_counter()
+    again = mesh.distance_matrix(sources, max_distance=radius, threads=1)
+    reused_call = (time.perf_counter() - t) / rows
+    assert (matrix != again).nnz == 0
     t = time.perf_counter()
     for s in sources:
-        d = fresh.distances(s, algorithm="vtp", max_distance=radius)
+        d = mesh.distances(s, algorithm="vtp", max_distance=radius)
     per_call = (time.perf_counter() - t) / rows
     reached = np.isfinite(d).sum()
-    return one_call, per_call, matrix.nnz / rows, reached
+    return first_call, reused_call, per_call, matrix.nnz / rows, reached
 
 
 def main():
@@ -88,7 +98,8 @@ def main():
 
     solve = {"tool setup": [], "tool solve": [], "tool setup+solve": [], "python first call": [],
              "python prepared call": []}
-    rows = {"C++ rows, per row": [], "Mesh.distance_matrix, per row": [], "Mesh.distances calls, per row": []}
+    rows = {"C++ rows, per row": [], "Mesh.distance_matrix, per row": [],
+            "Mesh.distance_matrix reused, per row": [], "Mesh.distances calls, per row": []}
     for r in range(args.repeats):
         setup, seconds = tool_solve(args.tool, args.mesh)
         first, second = python_solves(args.mesh)
@@ -100,13 +111,14 @@ def main():
         print(f"run {r}: tool setup {setup:.4f} s solve {seconds:.4f} s | python first {first:.4f} s "
               f"prepared {second:.4f} s", flush=True)
         cpp, cpp_entries = cpp_rows(args.bench_matrix, args.mesh, args.rows, args.radius)
-        one_call, per_call, entries, reached = python_rows(args.mesh, args.rows, args.radius)
+        first_call, reused_call, per_call, entries, reached = python_rows(args.mesh, args.rows, args.radius)
         rows["C++ rows, per row"].append(cpp)
-        rows["Mesh.distance_matrix, per row"].append(one_call)
+        rows["Mesh.distance_matrix, per row"].append(first_call)
+        rows["Mesh.distance_matrix reused, per row"].append(reused_call)
         rows["Mesh.distances calls, per row"].append(per_call)
         print(f"run {r}: rows C++ {1e3 * cpp:.3f} ms ({cpp_entries:.1f} entries) | distance_matrix "
-              f"{1e3 * one_call:.3f} ms ({entries:.1f}) | distances calls {1e3 * per_call:.3f} ms (last: {reached})",
-              flush=True)
+              f"{1e3 * first_call:.3f} ms ({entries:.1f}), reused {1e3 * reused_call:.3f} ms | distances calls "
+              f"{1e3 * per_call:.3f} ms (last: {reached})", flush=True)
     print("medians:")
     for name, values in list(solve.items()) + list(rows.items()):
         print(f"  {name}: {statistics.median(values):.5f} s")
@@ -115,6 +127,8 @@ def main():
     print(f"  python first call / tool setup+solve: {m['python first call'] / m['tool setup+solve']:.3f}")
     r = {k: statistics.median(v) for k, v in rows.items()}
     print(f"  distance_matrix / C++ rows: {r['Mesh.distance_matrix, per row'] / r['C++ rows, per row']:.3f}")
+    print(f"  distance_matrix reused / C++ rows: "
+          f"{r['Mesh.distance_matrix reused, per row'] / r['C++ rows, per row']:.3f}")
     print(f"  distances calls / C++ rows: {r['Mesh.distances calls, per row'] / r['C++ rows, per row']:.3f}")
 
 

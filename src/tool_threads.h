@@ -6,6 +6,7 @@
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/global_control.h>
+#include <tbb/info.h>
 #endif
 
 #include <cstddef>
@@ -13,16 +14,18 @@
 
 namespace geodesic_tool {
 
-/// While alive, lets the library's arena of `threads` threads (0: TBB's default) have them all.
-/// Otherwise TBB caps its workers at the number of cores minus one and, asked for more, prints a
-/// warning on the standard error. The tool owns its process, so a process-wide limit is fine here.
+/// While alive, lets the library's arena of `threads` threads (0: TBB's default) have them all
+/// when they are more than the cores: otherwise TBB caps its workers at the number of cores
+/// minus one and, asked for more, prints a warning on the standard error. It never lowers the
+/// limit: the arena of a call bounds that call's threads, and a process-wide cap below the cores
+/// would slow down what other threads of the process (a Python program's) run meanwhile.
 class Thread_allowance
 {
 public:
   explicit Thread_allowance(int threads)
   {
 #ifdef CGAL_LINKED_WITH_TBB
-    if(threads > 0)
+    if(threads > tbb::info::default_concurrency())
       m_control.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
 #else
     (void)threads;

@@ -10,6 +10,7 @@
 #include <CGAL_ext/Geodesics_3/Geodesic_statistics.h>
 #include <CGAL_ext/Geodesics_3/Named_function_parameters.h>
 #include <CGAL_ext/Geodesics_3/internal/patterns/Pattern_detector.h>
+#include <CGAL_ext/Geodesics_3/internal/support/Solver_arena.h>
 
 #include <CGAL/boost/graph/properties.h>
 #include <CGAL/tags.h>
@@ -269,8 +270,13 @@ detect_repetitive_patterns(const TriangleMesh& tm, const Pattern_patch<TriangleM
     for(auto v : patch.vertices)
       indices.vertices.push_back(std::size_t(get(vim, v)));
   }
-  internal::Pattern_detector<parallel, TriangleMesh, Vertex_point_map, decltype(vim)> detector(tm, vpm, vim, s);
-  const internal::Detection_result found = detector.run(indices);
+  // In an arena of the threads asked for: the steps' own loops (curvatures, signatures) take
+  // those threads, not every core.
+  internal::Detection_result found;
+  internal::run_in_arena<parallel>(int(s.threads), [&] {
+    internal::Pattern_detector<parallel, TriangleMesh, Vertex_point_map, decltype(vim)> detector(tm, vpm, vim, s);
+    found = detector.run(indices);
+  });
 
   std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> vertex_of_index(num_vertices(tm));
   for(auto v : vertices(tm))

@@ -43,7 +43,8 @@ def read_mesh(path):
     """Reads a mesh file (.off, .obj, .ply or .stl, ASCII or binary) into a :class:`Mesh`.
 
     Polygon soups are repaired as :class:`Mesh` does; ``mesh.repairs`` says what was done.
-    Raises GeodesicError when the file cannot be read or made into a mesh.
+    Raises FileNotFoundError (IsADirectoryError) when there is no such file, as open() does, and
+    GeodesicError when the file cannot be read or made into a mesh.
     """
     return Mesh.read(path)
 

@@ -7,16 +7,19 @@
 #include "tool_error.h"
 #include "tool_matrix.h"
 #include "tool_solvers.h"
+#include "tool_threads.h"
 
+#include <CGAL_ext/Geodesics_3/internal/distance_rows/Distance_rows.h>
 #include <CGAL_ext/Geodesics_3/internal/kernel/MMP_solver.h>
 #include <CGAL_ext/Geodesics_3/internal/kernel/VTP_solver.h>
 #include <CGAL_ext/Geodesics_3/internal/mesh/Mesh_setup.h>
-#include <CGAL_ext/Geodesics_3/internal/support/Progress_reporter.h>
-#include <CGAL_ext/Geodesics_3/internal/support/Solver_arena.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <limits>
 #include <mutex>
+#include <numeric>
+#include <type_traits>
 
 namespace cgal_ext_python {
 
@@ -41,6 +44,16 @@ public:
     m_index_of_point.reserve(file.vertex_of_point.size());
     for(Vertex_index v : file.vertex_of_point)
       m_index_of_point.push_back(m_setup.index(v));
+    // the points of each solver-mesh vertex (merged points share one), for local solves
+    m_points_of_vertex_start.assign(m_setup.cache().number_of_vertices + 1, 0);
+    for(int v : m_index_of_point)
+      ++m_points_of_vertex_start[std::size_t(v) + 1];
+    std::partial_sum(m_points_of_vertex_start.begin(), m_points_of_vertex_start.end(),
+                     m_points_of_vertex_start.begin());
+    m_points_of_vertex.resize(m_index_of_point.size());
+    std::vector<std::size_t> next(m_points_of_vertex_start.begin(), m_points_of_vertex_start.end() - 1);
+    for(std::size_t p = 0; p < m_index_of_point.size(); ++p)
+      m_points_of_vertex[next[std::size_t(m_index_of_point[p])]++] = p;
   }
 
   /// One run of the solver `choice` names from `sources` until `stops` are settled (point ids;
@@ -50,12 +63,12 @@ public:
   void solve(const Mesh_file& file, const std::vector<Surface_point>& sources, const std::vector<std::size_t>& stops,
              const Solver_choice& choice, double* distance, long long* nearest)
   {
-    geodesic_tool::check_a_source_is_on_a_face(file, sources);
+    const std::vector<internal::Source_point> points = source_points(file, sources);
+    const geodesic_tool::Thread_allowance allowance(choice.threads);
     const bool parallel = choice.algorithm->parallel;
     const auto add_sources = [&](internal::Solver_base& solver) {
-      for(const Surface_point& s : sources)
-        solver.add_source(s.vertex ? m_setup.source_point(geodesic_tool::mesh_vertex(file, s))
-                                   : m_setup.source_point(geodesic_tool::library_location(file, s, "source")));
+      for(const internal::Source_point& s : points)
+        solver.add_source(s);
     };
     const auto run = [&](auto& solver) {
       if(parallel)
@@ -88,13 +101,66 @@ public:
     give_back(std::move(kept));
   }
 
+  /// The rows of a distance matrix: a single-source VTP run from each of `sources`, within
+  /// `choice.max_distance`, on `choice.threads` (0: every core), in parallel across sources:
+  /// `make_row(solver, row)` on the thread that ran it, `hand_over(i, row)` in source order on
+  /// this one. The solver mesh is this one's; the row solvers are the call's own, so that calls
+  /// from several Python threads run side by side.
+  template <class Row, class MakeRow, class HandOver>
+  void for_each_row(const Mesh_file& file, const std::vector<Surface_point>& sources, const Solver_choice& choice,
+                    MakeRow make_row, HandOver hand_over)
+  {
+    const std::vector<internal::Source_point> points = source_points(file, sources);
+    const geodesic_tool::Thread_allowance allowance(choice.threads);
+    internal::Solver_settings settings;
+    settings.number_of_threads = choice.threads;
+    settings.callback = choice.callback;
+    internal::Row_solvers<geodesic_tool::parallel_available, Mesh, Vertex_point_map> rows(m_setup, settings);
+    rows.template for_each_row<Row>(
+      points, choice.max_distance, std::vector<int>(),
+      [&](const internal::VTP_solver& solver, const Setup&, Row& row) { make_row(solver, row); }, hand_over);
+  }
+
+  /// The solver-mesh vertex of input point p.
+  int solver_vertex(std::size_t p) const { return m_index_of_point[p]; }
+  const Setup& setup() const { return m_setup; }
+
 private:
-  /// The distance and nearest source of every point, from the solver's arrays.
-  void write(const internal::Solver_base& solver, double* distance, long long* nearest) const
+  std::vector<internal::Source_point> source_points(const Mesh_file& file, const std::vector<Surface_point>& sources)
+  {
+    geodesic_tool::check_a_source_is_on_a_face(file, sources);
+    std::vector<internal::Source_point> points;
+    for(const Surface_point& s : sources)
+      points.push_back(s.vertex ? m_setup.source_point(geodesic_tool::mesh_vertex(file, s))
+                                : m_setup.source_point(geodesic_tool::library_location(file, s, "source")));
+    return points;
+  }
+
+  /// The distance and nearest source of every point, from the solver's arrays. After a run that
+  /// reached few vertices (a local solve), only theirs are read: the rest are at infinity.
+  template <class Solver>
+  void write(const Solver& solver, double* distance, long long* nearest) const
   {
     const std::vector<double>& d = solver.distances();
     const std::vector<int>& source = solver.nearest_sources();
     const double unit = m_setup.cache().unit;
+    if constexpr(std::is_same<Solver, internal::VTP_solver>::value) {
+      const std::vector<int>& reached = solver.reached_vertices();
+      if(reached.size() < m_index_of_point.size() / 8) {
+        std::fill(distance, distance + m_index_of_point.size(), VTP_infinity);
+        if(nearest)
+          std::fill(nearest, nearest + m_index_of_point.size(), -1LL);
+        for(int v : reached)
+          for(std::size_t k = m_points_of_vertex_start[std::size_t(v)]; k < m_points_of_vertex_start[std::size_t(v) + 1];
+              ++k) {
+            const std::size_t p = m_points_of_vertex[k];
+            distance[p] = d[std::size_t(v)] * unit;
+            if(nearest)
+              nearest[p] = source[std::size_t(v)];
+          }
+        return;
+      }
+    }
     for(std::size_t p = 0; p < m_index_of_point.size(); ++p) {
       const std::size_t v = std::size_t(m_index_of_point[p]);
       distance[p] = d[v] * unit;
@@ -102,6 +168,7 @@ private:
         nearest[p] = source[v];
     }
   }
+  static constexpr double VTP_infinity = std::numeric_limits<double>::infinity();
 
   struct Kept_solver
   {
@@ -146,6 +213,7 @@ private:
   static constexpr std::size_t max_idle_solvers = 4;
   Setup m_setup;
   std::vector<int> m_index_of_point; // the solver mesh's vertex of each point
+  std::vector<std::size_t> m_points_of_vertex_start, m_points_of_vertex; // its inverse, CSR
   std::mutex m_mutex;
   std::vector<std::unique_ptr<Kept_solver>> m_idle;
 };
@@ -199,6 +267,13 @@ geodesic_tool::Polygons read_faces(py::handle faces, std::size_t number_of_point
                        std::string(py::str(a.dtype())));
     if(a.ndim() != 2 || a.shape(1) < 3)
       throw Tool_error("faces: expected an array of shape (m, 3) (or (m, k), k >= 3, of polygons)");
+    if(a.dtype().kind() == 'u' && a.itemsize() == 8 && a.size() > 0) {
+      // (ids above the largest int64 would wrap to negative ones in the conversion below)
+      const py::object largest = a.attr("max")();
+      if(largest.cast<unsigned long long>() >= static_cast<unsigned long long>(number_of_points))
+        throw Tool_error("faces: vertex id " + std::string(py::str(largest)) + " is out of range (there are " +
+                         std::to_string(number_of_points) + " vertices)");
+    }
     const auto ids = py::array_t<long long, py::array::c_style | py::array::forcecast>::ensure(a);
     const std::size_t k = std::size_t(ids.shape(1));
     const long long* id = ids.data();
@@ -299,48 +374,99 @@ py::object distance_matrix(const Mesh_ptr& mesh, py::handle sources, py::handle 
   } else {
     columns = read_vertex_ids(*mesh, targets, "target");
   }
-  const int thread_count = threads ? *threads : 0;
   const std::size_t rows = points.size(), width = columns.size();
   Python_callback callback(std::move(progress));
-  internal::Progress_reporter reporter(callback.function(), "the distance matrix");
-  const auto report = [&](std::size_t i) { reporter.report([&] { return double(i + 1) / double(rows); }); };
+  Solver_choice rows_choice = choice;
+  rows_choice.callback = callback.function();
+  const Mesh_file& file = mesh->file;
+  const geodesic_tool::Columns_of_vertices columns_of(file, columns);
+  // A vertex in no face reaches only itself (and the points merged with it): its row is made
+  // here, the others are solved, `solved_row[i]` being the row of the i-th solved source.
+  std::vector<Surface_point> solved;
+  std::vector<std::size_t> solved_row;
+  const auto isolated_vertex = [&](const Surface_point& s) -> std::optional<std::size_t> {
+    if(s.vertex && file.mesh.is_isolated(geodesic_tool::mesh_vertex(file, s)))
+      return std::size_t(geodesic_tool::mesh_vertex(file, s).idx());
+    return std::nullopt;
+  };
+  for(std::size_t r = 0; r < rows; ++r)
+    if(!isolated_vertex(points[r])) {
+      solved.push_back(points[r]);
+      solved_row.push_back(r);
+    }
 
   if(!(choice.max_distance < std::numeric_limits<double>::infinity())) {
     py::array_t<double> matrix({py::ssize_t(rows), py::ssize_t(width)});
     double* out = matrix.mutable_data();
+    for(std::size_t r = 0; r < rows; ++r)
+      if(const auto v = isolated_vertex(points[r])) {
+        std::fill(out + r * width, out + (r + 1) * width, std::numeric_limits<double>::infinity());
+        for(std::size_t j : columns_of.vertex(*v))
+          out[r * width + j] = 0.;
+      }
     without_gil(callback, [&] {
-      geodesic_tool::compute_distance_rows(mesh->file, points, choice.max_distance, thread_count,
-                                           [&](std::size_t i, const std::vector<double>& row) {
-                                             double* r = out + i * width;
-                                             for(std::size_t j = 0; j < width; ++j)
-                                               r[j] = row[columns[j]];
-                                             report(i);
-                                           });
+      if(solved.empty())
+        return;
+      Prepared_solvers& prepared = mesh->prepared_solvers();
+      std::vector<int> vertex_of_column(width);
+      for(std::size_t j = 0; j < width; ++j)
+        vertex_of_column[j] = prepared.solver_vertex(columns[j]);
+      const double unit = prepared.setup().cache().unit;
+      prepared.for_each_row<std::vector<double>>(
+        file, solved, rows_choice,
+        [&](const internal::VTP_solver& solver, std::vector<double>& row) {
+          const std::vector<double>& d = solver.distances();
+          row.resize(width);
+          for(std::size_t j = 0; j < width; ++j)
+            row[j] = d[std::size_t(vertex_of_column[j])] * unit;
+        },
+        [&](std::size_t i, const std::vector<double>& row) {
+          std::copy(row.begin(), row.end(), out + solved_row[i] * width);
+        });
     });
     return std::move(matrix);
   }
 
   std::vector<double> data;
   std::vector<long long> indices, indptr{0};
+  std::size_t next_row = 0; // rows are appended in order
+  const auto append_isolated_rows_before = [&](std::size_t end) {
+    for(; next_row < end; ++next_row) {
+      for(std::size_t j : columns_of.vertex(*isolated_vertex(points[next_row]))) {
+        indices.push_back(static_cast<long long>(j));
+        data.push_back(0.);
+      }
+      indptr.push_back(static_cast<long long>(indices.size()));
+    }
+  };
   without_gil(callback, [&] {
-    const geodesic_tool::Columns_of_vertices columns_of(mesh->file, columns);
-    std::vector<std::pair<long long, double>> entries;
-    geodesic_tool::compute_sparse_distance_rows(
-      mesh->file, points, choice.max_distance, thread_count,
-      [&](std::size_t i, const std::vector<std::pair<std::size_t, double>>& row) {
-        entries.clear();
-        for(const auto& [v, d] : row)
-          for(std::size_t j : columns_of.vertex(v))
-            entries.emplace_back(static_cast<long long>(j), d);
-        std::sort(entries.begin(), entries.end());
-        for(const auto& [j, d] : entries) {
+    if(solved.empty())
+      return;
+    Prepared_solvers& prepared = mesh->prepared_solvers();
+    const internal::Solver_mesh& cache = prepared.setup().cache();
+    typedef std::vector<std::pair<long long, double>> Entries;
+    prepared.for_each_row<Entries>(
+      file, solved, rows_choice,
+      [&](const internal::VTP_solver& solver, Entries& row) {
+        const std::vector<double>& d = solver.distances();
+        row.clear();
+        for(int v : solver.reached_vertices())
+          if(std::size_t(v) < cache.number_of_mesh_vertices && d[std::size_t(v)] < internal::VTP_solver::infinity())
+            for(std::size_t j : columns_of.vertex(std::size_t(cache.mesh_vertex(v))))
+              row.emplace_back(static_cast<long long>(j), d[std::size_t(v)] * cache.unit);
+        std::sort(row.begin(), row.end());
+      },
+      [&](std::size_t i, const Entries& row) {
+        append_isolated_rows_before(solved_row[i]);
+        for(const auto& [j, d] : row) {
           indices.push_back(j);
           data.push_back(d);
         }
         indptr.push_back(static_cast<long long>(indices.size()));
-        report(i);
+        ++next_row;
       });
   });
+  append_isolated_rows_before(rows);
   return py::make_tuple(to_array(std::move(data)), to_array(std::move(indices)), to_array(std::move(indptr)),
                         py::make_tuple(rows, width));
 }
@@ -359,18 +485,33 @@ surface oriented, non-manifold vertices and edges split and glued again) and
 ``repairs`` says what was done. Every id given to or returned by a method is a
 vertex or a face of the input, whatever the repair did.
 
-The first VTP solve builds the solver mesh; later solves reuse it and the
-solvers of earlier solves, so that a solve costs what it sweeps.
+The first distances() or distance_matrix() call builds the solver mesh; later
+ones reuse it (and the solvers of earlier distances() calls), so that a solve
+costs what it sweeps. GeodesicPaths, voronoi, farthest_point_sampling and
+detect_patterns prepare a solver mesh of their own at each call.
 )doc")
-    .def(py::init(&make_mesh), py::arg("vertices"), py::arg("faces"))
+    .def(py::init(&make_mesh), py::arg("vertices"), py::arg("faces"),
+         "Mesh(vertices, faces): vertices (n, 3) of any numeric dtype; faces (m, 3) of any integer dtype, "
+         "(m, k) polygons, or a sequence of polygons. Raises GeodesicError naming what cannot be made a mesh.")
     .def_static(
       "read",
       [](py::object path) {
-        const std::string name = py::str(py::module_::import("os").attr("fspath")(path));
+        const py::module_ os = py::module_::import("os");
+        const std::string name = py::str(os.attr("fsdecode")(os.attr("fspath")(path)));
+        // as open() says it: an OSError with the errno and the file name
+        const bool is_folder = os.attr("path").attr("isdir")(name).cast<bool>();
+        if(is_folder || !os.attr("path").attr("exists")(name).cast<bool>()) {
+          const py::object error = py::module_::import("builtins").attr(is_folder ? "IsADirectoryError" : "FileNotFoundError");
+          PyErr_SetObject(error.ptr(), py::make_tuple(is_folder ? EISDIR : ENOENT,
+                                                      is_folder ? "a folder, not a mesh file" : "no such mesh file", name)
+                                         .ptr());
+          throw py::error_already_set();
+        }
         py::gil_scoped_release release;
         return std::make_shared<Python_mesh>(geodesic_tool::read_mesh_file(name));
       },
-      py::arg("path"), "Reads a mesh file (.off, .obj, .ply or .stl, ASCII or binary) and prepares it.")
+      py::arg("path"), "Reads a mesh file (.off, .obj, .ply or .stl, ASCII or binary) and prepares it; FileNotFoundError "
+      "(IsADirectoryError) when there is no such file, GeodesicError when it cannot be read as a mesh.")
     .def_property_readonly(
       "vertices",
       [](py::object self) {

@@ -233,7 +233,9 @@ vertex or face point are queries. Targets are vertex ids or face points
 ``(face, (b0, b1, b2))``, as sources are.
 )doc")
     .def(py::init(&make_paths), py::arg("mesh"), py::arg("sources"), py::arg("algorithm") = py::none(),
-         py::arg("threads") = py::none(), py::arg("max_distance") = py::none(), py::arg("progress") = py::none())
+         py::arg("threads") = py::none(), py::arg("max_distance") = py::none(), py::arg("progress") = py::none(),
+         "GeodesicPaths(mesh, sources, algorithm=None, threads=None, max_distance=None, progress=None): one exact "
+         "propagation from the sources (vertex ids or face points), whose windows answer every later query.")
     .def_property_readonly(
       "n_sources", [](const Python_paths& p) { return p.number_of_sources; }, "The number of sources.")
     .def_property_readonly(

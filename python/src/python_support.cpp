@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <charconv>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -42,11 +43,12 @@ std::size_t read_id(py::handle h, const char* role)
   return std::size_t(i);
 }
 
+/// A number as Python writes it (the shortest text that reads back the same).
 std::string number_text(double x)
 {
-  std::ostringstream s;
-  s << x;
-  return s.str();
+  char text[32];
+  const auto end = std::to_chars(text, text + sizeof(text), x).ptr;
+  return std::string(text, end);
 }
 
 /// A face point from a face id and three numbers.
@@ -101,11 +103,13 @@ std::string python_name(const geodesic_tool::Algorithm& a)
   return name;
 }
 
-std::string algorithm_names(bool exact_only)
+/// The algorithms a call may take, quoted: every one (or the exact ones), or the parallel ones.
+std::string algorithm_names(bool exact_only, bool parallel_only = false)
 {
   std::string names;
   for(const geodesic_tool::Algorithm& a : geodesic_tool::algorithms)
-    if(!(exact_only && a.approximate) && (geodesic_tool::parallel_available || !a.parallel))
+    if(!(exact_only && a.approximate) && (geodesic_tool::parallel_available || !a.parallel) &&
+       (!parallel_only || a.parallel))
       names += (names.empty() ? "'" : ", '") + python_name(a) + "'";
   return names;
 }
@@ -125,7 +129,7 @@ geodesic_tool::Solver_choice solver_choice(const std::optional<std::string>& alg
   check_threads(threads);
   if(threads && *threads > 1 && !found->parallel)
     throw Tool_error("algorithm '" + name + "' runs on one thread: for threads=" + std::to_string(*threads) +
-                     " use its parallel form (" + algorithm_names(exact_only) + ")");
+                     " use a parallel one (" + algorithm_names(exact_only, true) + ")");
   geodesic_tool::Solver_choice choice;
   choice.algorithm = found;
   choice.batch_size = is_mmp_family(*found) ? CGAL_ext::default_window_batch_size : CGAL_ext::default_batch_size;
@@ -197,7 +201,8 @@ std::vector<Surface_point> read_points(const Python_mesh& mesh, py::handle point
     const py::array faces = py::array::ensure(items[0]);
     const py::array second = py::array::ensure(items[1]);
     if(faces && faces.ndim() == 1 && (faces.dtype().kind() == 'i' || faces.dtype().kind() == 'u') && second &&
-       second.ndim() == 2 && second.shape(1) == 3 && second.dtype().kind() == 'f') {
+       second.ndim() == 2 && second.shape(1) == 3 &&
+       (second.dtype().kind() == 'f' || second.dtype().kind() == 'i' || second.dtype().kind() == 'u')) {
       const auto b = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(items[1]);
       if(!b || b.ndim() != 2 || b.shape(1) != 3 || b.shape(0) != faces.shape(0))
         throw Tool_error(std::string(role) + "s as (faces, barycentric): barycentric must be of shape (" +

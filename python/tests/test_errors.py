@@ -182,11 +182,12 @@ def test_geodesic_error_is_a_value_error():
 
 
 def test_reading_a_missing_file(tmp_path):
+    # as open() does: an OSError with the errno and the file name
     missing = tmp_path / "no such mesh.off"
     for read in (geo.read_mesh, lambda p: geo.Mesh.read(str(p))):
-        with pytest.raises(geo.GeodesicError, match="cannot read mesh") as info:
+        with pytest.raises(FileNotFoundError) as info:
             read(missing)
-        assert str(missing) in str(info.value), "the message does not name the file"
+        assert info.value.filename == str(missing), "the error does not name the file"
 
 
 @pytest.mark.parametrize("content", [
@@ -204,8 +205,9 @@ def test_reading_a_bad_file(tmp_path, content):
 
 
 def test_reading_a_folder(tmp_path):
-    with pytest.raises(geo.GeodesicError, match="cannot read mesh"):
+    with pytest.raises(IsADirectoryError) as info:
         geo.read_mesh(tmp_path)
+    assert info.value.filename == str(tmp_path)
 
 
 def test_source_in_no_face(small):
@@ -377,3 +379,63 @@ def test_huge_thread_counts_never_crash(call):
         assert r == "ok" or "threads" in r, r
     """)
     assert rc == 0, f"{call.format(t=100000)}: the child process ended with {rc}:\n{out}\n{err[-1000:]}"
+
+
+# ----------------------------------------------------------------------------------------------
+# Inputs the review found mishandled
+
+
+def test_faces_of_uint64_beyond_int64(small):
+    V, F, m = small
+    bad = np.array([[0, 1, 2 ** 64 - 1]], dtype=np.uint64)
+    with pytest.raises(geo.GeodesicError, match=f"vertex id {2 ** 64 - 1} is out of range"):
+        geo.Mesh(V, bad)
+    assert geo.Mesh(V, F.astype(np.uint64)).n_faces == len(F)
+
+
+def test_read_mesh_takes_str_bytes_and_paths_and_says_when_the_file_is_missing(elephant_path, tmp_path):
+    for path in (str(elephant_path), elephant_path, bytes(elephant_path)):
+        assert geo.read_mesh(path).n_vertices == 2775
+    with pytest.raises(FileNotFoundError) as info:
+        geo.read_mesh(tmp_path / "nowhere.off")
+    assert info.value.filename == str(tmp_path / "nowhere.off")
+
+
+def test_face_points_as_two_arrays_of_integer_coordinates(small):
+    m = small[2]
+    as_ints = m.distances((np.array([3]), np.array([[1, 0, 0]])))
+    as_floats = m.distances((np.array([3]), np.array([[1.0, 0.0, 0.0]])))
+    assert as_ints.tobytes() == as_floats.tobytes()
+
+
+def test_a_sequential_algorithm_names_the_parallel_ones(small):
+    with pytest.raises(geo.GeodesicError) as info:
+        small[2].distances(0, algorithm="vtp", threads=2)
+    message = str(info.value)
+    assert "'pvtp'" in message and "'pmmp'" in message
+    assert "'mmp'" not in message and "'vtp'," not in message, message
+
+
+def test_face_point_message_gives_the_coordinates_to_the_last_digit(small):
+    with pytest.raises(geo.GeodesicError) as info:
+        small[2].distances((3, (1 / 3, 1 / 3, 0.5)))
+    assert f"({1 / 3!r}, {1 / 3!r}, 0.5)" in str(info.value), str(info.value)
+
+
+def test_matrix_rows_of_an_isolated_vertex():
+    # vertex 4 is in no face: its row is 0 at itself, inf (dense) or absent (sparse) elsewhere
+    V = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [1, 1, 0], [5, 5, 5]], dtype=float)
+    m = geo.Mesh(V, [[0, 1, 2], [1, 3, 2]])
+    sources = [4, 0, 4, 3]
+    dense = m.distance_matrix(sources)
+    assert dense.shape == (4, 5)
+    for r in (0, 2):
+        assert dense[r, 4] == 0 and np.all(np.isinf(dense[r, :4])), dense[r]
+    for r, s in ((1, 0), (3, 3)):
+        assert np.array_equal(dense[r], m.distances(s)), r
+    sparse = m.distance_matrix(sources, max_distance=10)
+    assert sparse.shape == (4, 5)
+    for r in (0, 2):
+        assert sparse[r].indices.tolist() == [4] and sparse[r].data.tolist() == [0.0]
+    assert np.array_equal(sparse.toarray()[1, :4], dense[1, :4])
+    assert np.array_equal(m.distance_matrix([4], targets=[0, 4]), [[np.inf, 0.0]])

@@ -323,3 +323,44 @@ def test_path(bundled, run_tool, tmp_path, algorithm, tool_algorithm, target):
         assert_exact(xyz[-1], mesh.vertices[target], what + ": the last point is the target")
     # the distances of the paths object are those of the solvers
     assert_close(paths.distances(), mesh.distances(sources, algorithm=algorithm), what + ", every distance")
+
+
+# ----------------------------------------------------------------------------------------------
+# pattern detection
+
+
+def bump_grid(n=90):
+    """A 3 x 3 grid of bumps on a height field, (V, F, the vertex nearest the middle bump)."""
+    x, y = np.meshgrid(np.linspace(0, 3, n), np.linspace(0, 3, n))
+    z = sum(0.15 * np.exp(-((x - a) ** 2 + (y - b) ** 2) / 0.03) for a in (0.5, 1.5, 2.5) for b in (0.5, 1.5, 2.5))
+    V = np.c_[x.ravel(), y.ravel(), z.ravel()]
+    i = (np.arange(n - 1)[:, None] * n + np.arange(n - 1)).ravel()
+    F = np.vstack([np.c_[i, i + 1, i + n + 1], np.c_[i, i + n + 1, i + n]])
+    return V, F, int(np.argmin(np.hypot(V[:, 0] - 1.5, V[:, 1] - 1.5)))
+
+
+def write_off(path, V, F):
+    with open(path, "w") as f:
+        f.write(f"OFF\n{len(V)} {len(F)} 0\n")
+        f.writelines("%r %r %r\n" % tuple(map(float, v)) for v in V)
+        f.writelines("3 %d %d %d\n" % tuple(t) for t in F)
+
+
+@pytest.mark.parametrize("threads", [1, 2])
+def test_detect_patterns(run_tool, tmp_path, threads):
+    import json
+    V, F, middle = bump_grid()
+    write_off(tmp_path / "bumps.off", V, F)
+    found = geo.Mesh(V, F).detect_patterns(center=middle, radius=0.4, threads=threads)
+    run_tool("patterns", tmp_path / "bumps.off", "--patch-center", middle, "--patch-radius", "0.4",
+             "--threads", threads, "--output", tmp_path / "p.json", "--labels", tmp_path / "l.txt")
+    with open(tmp_path / "p.json") as f:
+        expected = json.load(f)["instances"]
+    what = f"bumps, threads={threads}"
+    assert len(found.instances) == len(expected) == 9, f"{what}: {len(found.instances)} and {len(expected)} instances"
+    for k, (a, b) in enumerate(zip(found.instances, expected)):
+        assert a["center_vertex"] == b["center_vertex"], f"{what}, instance {k}"
+        assert_close(a["center"], b["center"], f"{what}, instance {k}: centre")
+        assert_close([a["scale"], a["energy"]], [b["scale"], b["energy"]], f"{what}, instance {k}: scale and energy")
+        assert_exact(a["vertices"], np.array(b["vertices"], dtype=np.int64), f"{what}, instance {k}: vertices")
+    assert_exact(found.labels, load_column(tmp_path / "l.txt", np.int64), what + ", labels")

@@ -126,8 +126,9 @@ def progress_calls(big_grid, elephant):
     V, F, mesh = big_grid
     n = len(V)
     return {
-        "distances vtp threads=1": lambda p: mesh.distances(0, threads=1, progress=p),
-        "distances vtp": lambda p: mesh.distances(0, progress=p),
+        "distances pvtp threads=1": lambda p: mesh.distances(0, threads=1, progress=p),
+        "distances pvtp": lambda p: mesh.distances(0, progress=p),
+        "distances vtp": lambda p: mesh.distances(0, algorithm="vtp", progress=p),
         "distances mmp": lambda p: mesh.distances(0, algorithm="mmp", progress=p),
         "distances fwp_mmp": lambda p: mesh.distances(0, algorithm="fwp_mmp", progress=p),
         "distances pmmp": lambda p: mesh.distances(0, algorithm="pmmp", progress=p),
@@ -140,7 +141,7 @@ def progress_calls(big_grid, elephant):
     }
 
 
-PROGRESS_NAMES = ["distances vtp threads=1", "distances vtp", "distances mmp", "distances fwp_mmp",
+PROGRESS_NAMES = ["distances pvtp threads=1", "distances pvtp", "distances vtp", "distances mmp", "distances fwp_mmp",
                   "distances pmmp", "paths", "dense matrix", "sparse matrix", "voronoi", "sampling", "patterns"]
 
 
@@ -223,8 +224,9 @@ def cancel_calls(big_grid, elephant):
     V, F, mesh = big_grid
     n = len(V)
     return {
-        "distances vtp threads=1": lambda p: mesh.distances(0, threads=1, progress=p),
-        "distances vtp": lambda p: mesh.distances([0, n - 1], progress=p),
+        "distances pvtp threads=1": lambda p: mesh.distances(0, threads=1, progress=p),
+        "distances pvtp": lambda p: mesh.distances([0, n - 1], progress=p),
+        "distances vtp": lambda p: mesh.distances([0, n - 1], algorithm="vtp", progress=p),
         "distances lam": lambda p: mesh.distances(0, lam=2.0, progress=p),
         "distances mmp": lambda p: mesh.distances(0, algorithm="mmp", progress=p),
         "distances fwp_mmp": lambda p: mesh.distances(0, algorithm="fwp_mmp", progress=p),
@@ -239,7 +241,7 @@ def cancel_calls(big_grid, elephant):
     }
 
 
-CANCEL_NAMES = ["distances vtp threads=1", "distances vtp", "distances lam", "distances mmp",
+CANCEL_NAMES = ["distances pvtp threads=1", "distances pvtp", "distances vtp", "distances lam", "distances mmp",
                 "distances fwp_mmp", "distances pmmp threads=1", "distances pmmp", "paths", "dense matrix",
                 "sparse matrix",
                 "voronoi", "sampling", "patterns"]
@@ -263,7 +265,8 @@ def test_cancel(big_grid, fresh_results, elephant, name):
     assert not isinstance(info.value, geo.GeodesicError)
     assert time.monotonic() - t0 < 10
     # the meshes still give the results of fresh ones
-    checks = {"distances vtp threads=1": ["vtp threads=1"], "distances vtp": ["vtp"], "distances lam": ["lam"],
+    checks = {"distances pvtp threads=1": ["vtp threads=1"], "distances pvtp": ["vtp"],
+              "distances vtp": ["sequential vtp"], "distances lam": ["lam"],
               "distances mmp": ["mmp"], "distances fwp_mmp": ["fwp_mmp"],
               "distances pmmp threads=1": ["pmmp threads=1"], "distances pmmp": ["pmmp"],
               "dense matrix": ["matrix"], "sparse matrix": ["matrix"],
@@ -399,3 +402,17 @@ def test_interrupt_pmmp_on_threads(huge_grid):
         assert_interrupted(result, "pmmp distances on 1,000,000 vertices, every core")
     finally:
         assert mesh.distances(len(V) // 2, threads=1, max_distance=0.05).tobytes() == reference.tobytes()
+
+
+def test_dense_matrix_rows_report_a_few_times_a_second(big_grid):
+    # full rows of 160,000 vertices: the rows are handed over (and the progress told) in batches
+    # of about a fifth of a second, not of as many rows as fit in memory
+    V, F, mesh = big_grid
+    times = []
+    t0 = time.monotonic()
+    m = mesh.distance_matrix(np.linspace(0, len(V) - 1, 12).astype(int), targets=[0, len(V) - 1],
+                             progress=lambda done: times.append(time.monotonic()))
+    total = time.monotonic() - t0
+    assert m.shape == (12, 2)
+    gaps = np.diff([t0] + times + [t0 + total])
+    assert gaps.max() < 1.0, f"12 full rows in {total:.2f} s: {len(times)} progress calls, largest gap {gaps.max():.2f} s"

@@ -14,8 +14,10 @@
 #include <CGAL_ext/Geodesics_3/internal/support/Solver_arena.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstddef>
 #include <memory>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -28,6 +30,9 @@ typedef std::pair<std::size_t, double> Row_entry;
 
 /// The memory the rows of a batch may take (`for_each_row`).
 constexpr std::size_t row_budget_bytes = std::size_t(64) << 20;
+/// The time a batch of rows should take (`for_each_row`): the callback hears of the rows a few
+/// times a second.
+constexpr double batch_seconds = 0.2;
 
 /// What the `add_stops` of `Row_solvers::for_each_row_stopping` may set on the solver of a row:
 /// stop vertices, given by mesh vertex index, and the stop floor.
@@ -74,7 +79,18 @@ public:
   Row_solvers(const TriangleMesh& tm, const NamedParameters& np)
     : m_settings(vtp_settings(np))
     , m_progress(std::exchange(m_settings.callback, {}), "the distance rows")
-    , m_mesh(tm, np)
+    , m_own_mesh(std::in_place, tm, np)
+    , m_mesh(*m_own_mesh)
+    , m_arena(m_settings.number_of_threads)
+  {
+  }
+
+  /// On a solver mesh the caller made and keeps, read only (several `Row_solvers` may share
+  /// it); `settings` as `read_solver_settings()` checks them, VTP's.
+  Row_solvers(const Setup& prepared, Solver_settings settings)
+    : m_settings(std::move(settings))
+    , m_progress(std::exchange(m_settings.callback, {}), "the distance rows")
+    , m_mesh(prepared)
     , m_arena(m_settings.number_of_threads)
   {
   }
@@ -88,8 +104,9 @@ public:
   /// parallel across sources. Calls `make_row(solver, mesh, row)` after each run, on the thread
   /// that ran it, then `hand_over(i, row)` in source order from the calling thread. A batch of
   /// rows is solved, then handed over: as many rows as fit `row_budget_bytes` at the size of the
-  /// rows made so far, between 4 and 64 per thread (the threads wait for the batch's last row:
-  /// the longer the batch, the less they wait).
+  /// rows made so far, and as the threads solve in `batch_seconds` at the speed so far, between 1
+  /// and 64 per thread (the threads wait for the batch's last row: the longer the batch, the less
+  /// they wait; the shorter, the sooner the caller's callback hears of it and can cancel).
   template <class Row, class StopVertices, class MakeRow, class HandOver>
   void for_each_row(const std::vector<Source_point>& points, double max_distance, const StopVertices& stop,
                     MakeRow make_row, HandOver hand_over)
@@ -112,8 +129,9 @@ public:
         m_solvers.resize(threads);
         m_run_statistics.resize(threads);
       }
-      std::size_t batch = parallel ? 4 * threads : 1;
+      std::size_t batch = threads;
       std::size_t rows_made = 0, bytes_made = 0;
+      const auto start = std::chrono::steady_clock::now();
       std::vector<Row> rows;
       for(std::size_t first = 0, n = 0; first < points.size(); first += n) {
         m_progress.report([&] { return double(first) / double(points.size()); });
@@ -143,9 +161,10 @@ public:
           hand_over(first + j, static_cast<const Row&>(rows[j]));
         }
         rows_made += n;
-        if(parallel)
-          batch = std::clamp<std::size_t>(row_budget_bytes * rows_made / std::max<std::size_t>(bytes_made, 1),
-                                          4 * threads, 64 * threads);
+        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        const double by_time = seconds > 0 ? batch_seconds * double(rows_made) / seconds : double(64 * threads);
+        const double by_memory = double(row_budget_bytes) * double(rows_made) / double(std::max<std::size_t>(bytes_made, 1));
+        batch = std::size_t(std::clamp(std::min(by_time, by_memory), double(threads), double(64 * threads)));
       }
     });
   }
@@ -175,7 +194,8 @@ private:
 
   Solver_settings m_settings; // without the callback: the rows' solvers run on any thread
   Progress_reporter m_progress; // the caller's callback: rows handed over, from the calling thread
-  Setup m_mesh;
+  std::optional<Setup> m_own_mesh; // unless the caller's is used
+  const Setup& m_mesh;
   Solver_arena<parallel> m_arena;
   std::vector<std::unique_ptr<VTP_solver>> m_solvers; // by thread slot
   std::vector<Geodesic_statistics> m_run_statistics;   // by thread slot: its runs, summed
