@@ -219,6 +219,17 @@ std::shared_ptr<Python_paths> make_paths(const Mesh_ptr& mesh, py::handle source
   return paths;
 }
 
+/// A query of one target (a vertex id or a face point), answered without the GIL.
+template <class Result>
+auto target_query(Result (Paths_queries::*query)(const Surface_point&) const)
+{
+  return [query](const Python_paths& p, py::handle target) {
+    const Surface_point t = read_point(*p.mesh, target, "target");
+    py::gil_scoped_release release;
+    return (p.queries.get()->*query)(t);
+  };
+}
+
 } // namespace
 
 void bind_paths(py::module_& m)
@@ -241,21 +252,9 @@ vertex or face point are queries. Targets are vertex ids or face points
     .def_property_readonly(
       "mesh", [](const Python_paths& p) { return p.mesh; }, "The mesh the paths were built on.")
     .def(
-      "distance",
-      [](const Python_paths& p, py::handle target) {
-        const Surface_point t = read_point(*p.mesh, target, "target");
-        py::gil_scoped_release release;
-        return p.queries->distance(t);
-      },
-      py::arg("target"), "The geodesic distance from the nearest source to a vertex or face point (inf if none reaches it).")
+      "distance", target_query(&Paths_queries::distance), py::arg("target"), "The geodesic distance from the nearest source to a vertex or face point (inf if none reaches it).")
     .def(
-      "nearest_source",
-      [](const Python_paths& p, py::handle target) {
-        const Surface_point t = read_point(*p.mesh, target, "target");
-        py::gil_scoped_release release;
-        return p.queries->nearest_source(t);
-      },
-      py::arg("target"), "The index of the nearest source of a vertex or face point, in the order given; -1 if none reaches it.")
+      "nearest_source", target_query(&Paths_queries::nearest_source), py::arg("target"), "The index of the nearest source of a vertex or face point, in the order given; -1 if none reaches it.")
     .def(
       "distances",
       [](const Python_paths& p) {
