@@ -394,6 +394,8 @@ private:
         if(!e.second.window) {
           if(!is_stale(e.first, e.second))
             emit_from_vertex(e.second.vertex);
+          // (the vertices a round takes may sweep much of the mesh before its first window)
+          report_progress_often([&] { return done_fraction(m_front); });
           continue;
         }
         if(n == 0) // the round's lowest window key: every distance below it is settled
