@@ -40,20 +40,11 @@ public:
 
   explicit Prepared_solvers(const Mesh_file& file)
     : m_setup(file.mesh, CGAL_ext::parameters::glued_vertices(file.glued_vertices))
+    , m_points_of_vertex(file, every_point(file))
   {
     m_index_of_point.reserve(file.vertex_of_point.size());
     for(Vertex_index v : file.vertex_of_point)
       m_index_of_point.push_back(m_setup.index(v));
-    // the points of each solver-mesh vertex (merged points share one), for local solves
-    m_points_of_vertex_start.assign(m_setup.cache().number_of_vertices + 1, 0);
-    for(int v : m_index_of_point)
-      ++m_points_of_vertex_start[std::size_t(v) + 1];
-    std::partial_sum(m_points_of_vertex_start.begin(), m_points_of_vertex_start.end(),
-                     m_points_of_vertex_start.begin());
-    m_points_of_vertex.resize(m_index_of_point.size());
-    std::vector<std::size_t> next(m_points_of_vertex_start.begin(), m_points_of_vertex_start.end() - 1);
-    for(std::size_t p = 0; p < m_index_of_point.size(); ++p)
-      m_points_of_vertex[next[std::size_t(m_index_of_point[p])]++] = p;
   }
 
   /// One run of the solver `choice` names from `sources` until `stops` are settled (point ids;
@@ -126,6 +117,13 @@ public:
   const Setup& setup() const { return m_setup; }
 
 private:
+  static std::vector<std::size_t> every_point(const Mesh_file& file)
+  {
+    std::vector<std::size_t> points(file.vertex_of_point.size());
+    std::iota(points.begin(), points.end(), std::size_t(0));
+    return points;
+  }
+
   std::vector<internal::Source_point> source_points(const Mesh_file& file, const std::vector<Surface_point>& sources)
   {
     geodesic_tool::check_a_source_is_on_a_face(file, sources);
@@ -150,14 +148,16 @@ private:
         std::fill(distance, distance + m_index_of_point.size(), VTP_infinity);
         if(nearest)
           std::fill(nearest, nearest + m_index_of_point.size(), -1LL);
-        for(int v : reached)
-          for(std::size_t k = m_points_of_vertex_start[std::size_t(v)]; k < m_points_of_vertex_start[std::size_t(v) + 1];
-              ++k) {
-            const std::size_t p = m_points_of_vertex[k];
+        const internal::Solver_mesh& cache = m_setup.cache();
+        for(int v : reached) {
+          if(std::size_t(v) >= cache.number_of_mesh_vertices)
+            continue; // a vertex the solver mesh added: no point of the input's
+          for(std::size_t p : m_points_of_vertex.vertex(std::size_t(cache.mesh_vertex(v)))) {
             distance[p] = d[std::size_t(v)] * unit;
             if(nearest)
               nearest[p] = source[std::size_t(v)];
           }
+        }
         return;
       }
     }
@@ -213,7 +213,7 @@ private:
   static constexpr std::size_t max_idle_solvers = 4;
   Setup m_setup;
   std::vector<int> m_index_of_point; // the solver mesh's vertex of each point
-  std::vector<std::size_t> m_points_of_vertex_start, m_points_of_vertex; // its inverse, CSR
+  geodesic_tool::Columns_of_vertices m_points_of_vertex; // the points of each mesh vertex (for local solves)
   std::mutex m_mutex;
   std::vector<std::unique_ptr<Kept_solver>> m_idle;
 };

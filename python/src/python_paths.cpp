@@ -192,6 +192,20 @@ struct Python_paths
   std::size_t number_of_sources = 0;
   std::unique_ptr<Paths_queries> queries;
   std::unique_ptr<Input_faces> input_faces;
+
+  /// The path to `target` (read with the GIL held), its points and their face locations, traced
+  /// without the GIL; `also(locations)` runs there too.
+  template <class Also>
+  std::vector<geodesic_tool::Point> path(py::handle target, Also also) const
+  {
+    const Surface_point t = read_point(*mesh, target, "target");
+    std::vector<geodesic_tool::Point> points;
+    std::vector<Face_location> locations;
+    py::gil_scoped_release release;
+    queries->path(t, points, locations);
+    also(locations);
+    return points;
+  }
 };
 
 std::shared_ptr<Python_paths> make_paths(const Mesh_ptr& mesh, py::handle sources,
@@ -278,14 +292,7 @@ vertex or face point are queries. Targets are vertex ids or face points
     .def(
       "path",
       [](const Python_paths& p, py::handle target) {
-        const Surface_point t = read_point(*p.mesh, target, "target");
-        std::vector<geodesic_tool::Point> points;
-        std::vector<Face_location> locations;
-        {
-          py::gil_scoped_release release;
-          p.queries->path(t, points, locations);
-        }
-        return points_array(points);
+        return points_array(p.path(target, [](const std::vector<Face_location>&) {}));
       },
       py::arg("target"),
       "The shortest path from the nearest source to a vertex or face point, (k, 3) float64, the source first; "
@@ -293,21 +300,16 @@ vertex or face point are queries. Targets are vertex ids or face points
     .def(
       "path_locations",
       [](const Python_paths& p, py::handle target) {
-        const Surface_point t = read_point(*p.mesh, target, "target");
-        std::vector<geodesic_tool::Point> points;
-        std::vector<Face_location> locations;
         std::vector<long long> faces;
         std::vector<double> barycentric;
-        {
-          py::gil_scoped_release release;
-          p.queries->path(t, points, locations);
+        p.path(target, [&](const std::vector<Face_location>& locations) {
           for(const Face_location& l : locations) {
             const auto [face, b] = l.first == Face_index() ? std::make_pair(-1LL, std::array<double, 3>{{0., 0., 0.}})
                                                            : p.input_faces->location(l);
             faces.push_back(face);
             barycentric.insert(barycentric.end(), b.begin(), b.end());
           }
-        }
+        });
         const py::ssize_t k = py::ssize_t(faces.size());
         return py::make_tuple(to_array(std::move(faces)), to_array(std::move(barycentric), {k, 3}));
       },
